@@ -1,0 +1,304 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Dual_graph.h
+/// \brief The dual graph of a triangle mesh, with per-edge geometry.
+#ifndef SPECTRALSEG_DUAL_GRAPH_H
+#define SPECTRALSEG_DUAL_GRAPH_H
+
+#include <SpectralSeg/Mesh_geometry.h>
+
+#include <boost/graph/compressed_sparse_row_graph.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+
+/// \ingroup PkgSpectralSegCore
+/// \brief The dual graph of a triangle mesh: one node per face, one edge per
+/// pair of faces that share a mesh edge.
+///
+/// The adjacency is stored in compressed sparse rows as a Boost
+/// `compressed_sparse_row_graph` (each dual edge appears once in each
+/// direction), so that Boost Graph Library algorithms run on it directly.
+/// The geometry of each dual edge is computed once: the length of the shared
+/// mesh edge, the centroid-to-midpoint path length used by the geodesic
+/// metric, the angle between the two face normals, and whether the fold is
+/// concave. Mesh edges on a border have no dual edge.
+///
+/// Nodes are numbered by the face index map of the mesh the graph was built
+/// from; dual edges are numbered in the order of that mesh's edges.
+class Dual_graph
+{
+public:
+  /// node (face) and dual-edge index type
+  typedef std::uint32_t size_type;
+
+  /// geometry of one dual edge
+  struct Edge
+  {
+    /// the two faces; the shared mesh edge runs from `vertex[0]` to
+    /// `vertex[1]` in the orientation of `face[0]`
+    size_type face[2];
+    /// the two vertices of the shared mesh edge
+    size_type vertex[2];
+    /// length of the shared mesh edge
+    double length;
+    /// \f$\|c_0 - m\| + \|c_1 - m\|\f$, with \f$c_i\f$ the face centroids
+    /// and \f$m\f$ the midpoint of the shared edge (thesis eq. 3.1)
+    double geodesic_length;
+    /// angle between the two face normals, in \f$[0, \pi]\f$
+    double normal_angle;
+    /// whether the two faces form a concave (valley) fold, judged with
+    /// outward normals; a flat pair is not concave
+    bool concave;
+  };
+
+  /// bundled property of a CSR arc: the dual edge it belongs to
+  struct Arc
+  {
+    size_type dual_edge;
+  };
+
+  /// the Boost CSR graph type
+  typedef boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, Arc,
+                                             boost::no_property, size_type, size_type>
+    Csr;
+
+  /// one face adjacency: faces `f0`, `f1` sharing the mesh edge `v0 -> v1`
+  /// (oriented as in `f0`)
+  struct Adjacency
+  {
+    size_type f0, f1, v0, v1;
+  };
+
+  Dual_graph() = default;
+
+  /// Builds the graph from a mesh geometry and its face adjacencies.
+  /// Degenerate faces receive the normal of their neighbours here.
+  Dual_graph(Mesh_geometry geometry, const std::vector<Adjacency>& adjacencies,
+             std::size_t number_of_border_edges = 0)
+    : geometry_(std::move(geometry)), border_edges_(number_of_border_edges)
+  {
+    build(adjacencies);
+  }
+
+  /// the geometry the graph was built from
+  const Mesh_geometry& geometry() const { return geometry_; }
+  /// number of nodes (faces)
+  size_type number_of_faces() const { return static_cast<size_type>(geometry_.number_of_faces()); }
+  /// number of dual edges
+  size_type number_of_edges() const { return static_cast<size_type>(edges_.size()); }
+  /// the geometry of dual edge `e`
+  const Edge& edge(size_type e) const { return edges_[e]; }
+  /// all dual edges
+  const std::vector<Edge>& edges() const { return edges_; }
+  /// the Boost CSR graph
+  const Csr& csr() const { return csr_; }
+  /// number of mesh edges with a single incident face
+  std::size_t number_of_border_edges() const { return border_edges_; }
+  /// length of the longest shared mesh edge (0 if there is no dual edge)
+  double longest_edge_length() const { return longest_edge_; }
+
+  /// number of connected components of the dual graph
+  size_type number_of_components() const { return components_; }
+  /// the connected component of each face, numbered from 0 by smallest face index
+  const std::vector<size_type>& component_of_faces() const { return component_; }
+
+  /// number of neighbours of face `f`
+  size_type degree(size_type f) const { return static_cast<size_type>(out_degree(f, csr_)); }
+
+  /// calls `fn(neighbour_face, dual_edge)` for each neighbour of `f`
+  template <typename Fn>
+  void for_each_neighbour(size_type f, const Fn& fn) const
+  {
+    for(auto e : boost::make_iterator_range(out_edges(f, csr_)))
+      fn(static_cast<size_type>(target(e, csr_)), csr_[e].dual_edge);
+  }
+
+private:
+  void build(const std::vector<Adjacency>& adjacencies)
+  {
+    const std::size_t nf = geometry_.number_of_faces();
+    edges_.clear();
+    edges_.reserve(adjacencies.size());
+    std::vector<std::pair<size_type, size_type>> arcs;
+    std::vector<Arc> arc_props;
+    std::vector<std::tuple<size_type, size_type, size_type>> sorted;
+    sorted.reserve(2 * adjacencies.size());
+    for(const Adjacency& a : adjacencies)
+    {
+      if(a.f0 >= nf || a.f1 >= nf || a.f0 == a.f1)
+        throw Invalid_input("invalid face adjacency (" + std::to_string(a.f0) + ", " + std::to_string(a.f1) + ")");
+      const size_type e = static_cast<size_type>(edges_.size());
+      Edge edge;
+      edge.face[0] = a.f0;
+      edge.face[1] = a.f1;
+      edge.vertex[0] = a.v0;
+      edge.vertex[1] = a.v1;
+      edges_.push_back(edge);
+      sorted.emplace_back(a.f0, a.f1, e);
+      sorted.emplace_back(a.f1, a.f0, e);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    arcs.reserve(sorted.size());
+    arc_props.reserve(sorted.size());
+    for(const auto& t : sorted)
+    {
+      arcs.emplace_back(std::get<0>(t), std::get<1>(t));
+      arc_props.push_back(Arc{std::get<2>(t)});
+    }
+    csr_ = Csr(boost::edges_are_sorted, arcs.begin(), arcs.end(), arc_props.begin(),
+               static_cast<size_type>(nf));
+
+    fill_degenerate_normals();
+    compute_edge_geometry();
+    compute_components();
+  }
+
+  // Degenerate faces take the area-weighted mean normal of their neighbours
+  // with a defined normal; repeated so that runs of degenerate faces fill in.
+  void fill_degenerate_normals()
+  {
+    std::vector<size_type> pending;
+    for(size_type f = 0; f < number_of_faces(); ++f)
+      if(geometry_.degenerate[f])
+        pending.push_back(f);
+    while(!pending.empty())
+    {
+      std::vector<std::pair<size_type, Eigen::Vector3d>> filled;
+      std::vector<size_type> still;
+      for(size_type f : pending)
+      {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        for_each_neighbour(f, [&](size_type g, size_type) {
+          sum += (geometry_.areas[g] > 0 ? geometry_.areas[g] : 1.) * geometry_.normals[g];
+        });
+        const double len = sum.norm();
+        if(len > 0 && std::isfinite(len))
+          filled.emplace_back(f, sum / len);
+        else
+          still.push_back(f);
+      }
+      if(filled.empty())
+        break; // isolated degenerate faces keep a zero normal
+      for(const auto& fn : filled)
+        geometry_.normals[fn.first] = fn.second;
+      pending.swap(still);
+    }
+  }
+
+  void compute_edge_geometry()
+  {
+    longest_edge_ = 0.;
+    for(Edge& e : edges_)
+    {
+      const Eigen::Vector3d& p = geometry_.points[e.vertex[0]];
+      const Eigen::Vector3d& q = geometry_.points[e.vertex[1]];
+      const Eigen::Vector3d& c0 = geometry_.centroids[e.face[0]];
+      const Eigen::Vector3d& c1 = geometry_.centroids[e.face[1]];
+      const Eigen::Vector3d& n0 = geometry_.normals[e.face[0]];
+      const Eigen::Vector3d& n1 = geometry_.normals[e.face[1]];
+      const Eigen::Vector3d m = 0.5 * (p + q);
+      e.length = (q - p).norm();
+      e.geodesic_length = (c0 - m).norm() + (c1 - m).norm();
+      const bool defined = n0.squaredNorm() > 0.5 && n1.squaredNorm() > 0.5;
+      const double cosine = std::max(-1., std::min(1., n0.dot(n1)));
+      e.normal_angle = defined ? std::acos(cosine) : 0.;
+      // The fold is concave when each face rises above the other's tangent
+      // plane: (n0 - n1).(c1 - c0) > 0. The tolerance keeps flat pairs convex.
+      const double fold = (n0 - n1).dot(c1 - c0);
+      e.concave = defined && fold > 1e-12 * (c1 - c0).norm();
+      longest_edge_ = std::max(longest_edge_, e.length);
+    }
+  }
+
+  void compute_components()
+  {
+    const size_type nf = number_of_faces();
+    const size_type unset = static_cast<size_type>(-1);
+    component_.assign(nf, unset);
+    components_ = 0;
+    std::vector<size_type> stack;
+    for(size_type s = 0; s < nf; ++s)
+    {
+      if(component_[s] != unset)
+        continue;
+      component_[s] = components_;
+      stack.push_back(s);
+      while(!stack.empty())
+      {
+        const size_type f = stack.back();
+        stack.pop_back();
+        for_each_neighbour(f, [&](size_type g, size_type) {
+          if(component_[g] == unset)
+          {
+            component_[g] = components_;
+            stack.push_back(g);
+          }
+        });
+      }
+      ++components_;
+    }
+  }
+
+  Mesh_geometry geometry_;
+  std::vector<Edge> edges_;
+  Csr csr_;
+  std::size_t border_edges_ = 0;
+  double longest_edge_ = 0.;
+  std::vector<size_type> component_;
+  size_type components_ = 0;
+};
+
+/// \ingroup PkgSpectralSegCore
+/// \brief Builds the dual graph of a triangle mesh.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///         whose faces are triangles, with outward-oriented faces (concavity
+///         is judged with the face normals)
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh
+/// \param np optional named parameters, as for `extract_mesh_geometry()`:
+///   `vertex_point_map`, `vertex_index_map`, `face_index_map`
+///
+/// \throws Invalid_input if a face is not a triangle or a coordinate is not finite.
+template <typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+Dual_graph make_dual_graph(const TriangleMesh& tm,
+                           const NamedParameters& np = parameters::default_values())
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  Mesh_geometry geometry = extract_mesh_geometry(tm, np);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+
+  std::vector<Dual_graph::Adjacency> adjacencies;
+  adjacencies.reserve(num_edges(tm));
+  std::size_t border = 0;
+  for(typename GT::edge_descriptor e : edges(tm))
+  {
+    const typename GT::halfedge_descriptor h = halfedge(e, tm);
+    const typename GT::face_descriptor f0 = face(h, tm);
+    const typename GT::face_descriptor f1 = face(opposite(h, tm), tm);
+    if(f0 == GT::null_face() || f1 == GT::null_face())
+    {
+      ++border;
+      continue;
+    }
+    adjacencies.push_back({static_cast<Dual_graph::size_type>(get(fim, f0)),
+                           static_cast<Dual_graph::size_type>(get(fim, f1)),
+                           static_cast<Dual_graph::size_type>(get(vim, source(h, tm))),
+                           static_cast<Dual_graph::size_type>(get(vim, target(h, tm)))});
+  }
+  return Dual_graph(std::move(geometry), adjacencies, border);
+}
+
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_DUAL_GRAPH_H

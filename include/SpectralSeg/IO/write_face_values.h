@@ -1,0 +1,78 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file write_face_values.h
+/// \brief Writing one value per face of an input file, in that file's face order.
+#ifndef SPECTRALSEG_IO_WRITE_FACE_VALUES_H
+#define SPECTRALSEG_IO_WRITE_FACE_VALUES_H
+
+#include <SpectralSeg/IO/Mesh_file_report.h>
+#include <SpectralSeg/exceptions.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace SpectralSeg {
+namespace IO {
+
+/// \ingroup PkgSpectralSegIO
+/// \brief Maps per-mesh-face values back to the faces of the file that
+/// `report` describes. Faces the reader dropped as invalid get `missing`.
+template <typename T>
+std::vector<T> values_in_input_order(const Mesh_file_report& report, const std::vector<T>& per_mesh_face,
+                                     const T& missing)
+{
+  std::vector<T> out(report.face_of_input_face.size(), missing);
+  for(std::size_t p = 0; p < out.size(); ++p)
+  {
+    const std::size_t f = report.face_of_input_face[p];
+    if(f != Mesh_file_report::no_face && f < per_mesh_face.size())
+      out[p] = per_mesh_face[f];
+  }
+  return out;
+}
+
+/// \ingroup PkgSpectralSegIO
+/// \brief Writes one value per line: `inf` for an infinite value (an
+/// unreachable face), `nan` for a face without value, full precision.
+/// \throws Io_error if the file cannot be written
+inline void write_face_values(const std::string& path, const std::vector<double>& values)
+{
+  std::ofstream out(path);
+  if(!out)
+    throw Io_error("cannot write '" + path + "'");
+  out << std::setprecision(std::numeric_limits<double>::max_digits10);
+  for(double v : values)
+  {
+    if(std::isnan(v))
+      out << "nan\n";
+    else if(std::isinf(v))
+      out << (v > 0 ? "inf\n" : "-inf\n");
+    else
+      out << v << '\n';
+  }
+  if(!out)
+    throw Io_error("error while writing '" + path + "'");
+}
+
+/// \ingroup PkgSpectralSegIO
+/// \brief Writes one integer label per line.
+/// \throws Io_error if the file cannot be written
+inline void write_face_values(const std::string& path, const std::vector<int>& labels)
+{
+  std::ofstream out(path);
+  if(!out)
+    throw Io_error("cannot write '" + path + "'");
+  for(int v : labels)
+    out << v << '\n';
+  if(!out)
+    throw Io_error("error while writing '" + path + "'");
+}
+
+} // namespace IO
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_IO_WRITE_FACE_VALUES_H

@@ -1,0 +1,148 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Blend.h
+/// \brief A weighted mix of normalised metrics (thesis 3.5).
+#ifndef SPECTRALSEG_METRICS_BLEND_H
+#define SPECTRALSEG_METRICS_BLEND_H
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Execution.h>
+#include <SpectralSeg/Metrics/normalize_weights.h>
+#include <SpectralSeg/exceptions.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+namespace Metrics {
+
+/// \ingroup PkgSpectralSegMetrics
+/// \brief Mixes several dual-edge metrics: each component's weights are
+/// normalised into \f$[0, 1]\f$ by `normalize_weights()`, then summed with
+/// the blend coefficients (\f$\alpha\f$, \f$\beta\f$, \f$\gamma\f$, ... in the
+/// thesis).
+///
+/// The coefficients must be finite and non-negative, not all zero; they are
+/// divided by their sum, so that they add up to 1 as in the thesis. A
+/// component whose coefficient is zero is not computed at all.
+///
+/// \tparam Components models of `DualEdgeWeight`
+///
+/// \cgalModels `DualEdgeWeight`
+template <typename... Components>
+class Blend
+{
+public:
+  /// number of components
+  static constexpr std::size_t size = sizeof...(Components);
+
+  /// \param coefficients one coefficient per component
+  /// \param components the component metrics
+  explicit Blend(const std::array<double, size>& coefficients, Components... components)
+    : coefficients_(coefficients), components_(std::move(components)...)
+  {
+    double sum = 0;
+    for(double c : coefficients_)
+    {
+      if(!(c >= 0) || !std::isfinite(c))
+        throw Invalid_input("Blend: coefficients must be finite and non-negative");
+      sum += c;
+    }
+    if(!(sum > 0))
+      throw Invalid_input("Blend: at least one coefficient must be positive");
+    for(double& c : coefficients_)
+      c /= sum;
+  }
+
+  /// the coefficients, normalised to add up to 1
+  const std::array<double, size>& coefficients() const { return coefficients_; }
+  /// the components
+  const std::tuple<Components...>& components() const { return components_; }
+
+  /// `"blend(name1*c1 + ...)"`
+  std::string name() const
+  {
+    std::string s = "blend(";
+    append_names(s, std::index_sequence_for<Components...>());
+    return s + ")";
+  }
+
+  /// one weight per dual edge of `graph`
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution(1)) const
+  {
+    std::vector<double> w(graph.number_of_edges(), 0.);
+    accumulate(graph, exec, w, std::index_sequence_for<Components...>());
+    return w;
+  }
+
+private:
+  template <std::size_t... I>
+  void accumulate(const Dual_graph& graph, const Execution& exec, std::vector<double>& w,
+                  std::index_sequence<I...>) const
+  {
+    (add_component(std::get<I>(components_), coefficients_[I], graph, exec, w), ...);
+  }
+
+  template <typename C>
+  static void add_component(const C& c, double coefficient, const Dual_graph& graph,
+                            const Execution& exec, std::vector<double>& w)
+  {
+    if(coefficient == 0.)
+      return;
+    std::vector<double> cw = c(graph, exec);
+    check_weights(graph, cw, c.name());
+    normalize_weights(cw);
+    for(std::size_t e = 0; e < w.size(); ++e)
+      w[e] += coefficient * cw[e];
+  }
+
+  template <std::size_t... I>
+  void append_names(std::string& s, std::index_sequence<I...>) const
+  {
+    std::size_t k = 0;
+    ((s += (k++ ? " + " : "") + std::get<I>(components_).name() + "*" +
+           std::to_string(coefficients_[I])),
+     ...);
+  }
+
+  std::array<double, size> coefficients_;
+  std::tuple<Components...> components_;
+};
+
+/// \ingroup PkgSpectralSegMetrics
+/// \brief Builds a `Blend` from alternating components and coefficients:
+/// `make_blend(Geodesic_weight(), 0.01, Angular_weight(), 0.99)`.
+template <typename... Args>
+auto make_blend(Args&&... args);
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+template <typename... C, std::size_t... I, typename Tuple>
+Blend<C...> make_blend_impl(std::index_sequence<I...>, Tuple&& t)
+{
+  return Blend<C...>({static_cast<double>(std::get<2 * I + 1>(t))...}, std::get<2 * I>(t)...);
+}
+template <typename Tuple, std::size_t... I>
+auto make_blend_from_tuple(Tuple&& t, std::index_sequence<I...> seq)
+{
+  return make_blend_impl<std::decay_t<std::tuple_element_t<2 * I, std::decay_t<Tuple>>>...>(seq, t);
+}
+} // namespace internal
+
+template <typename... Args>
+auto make_blend(Args&&... args)
+{
+  static_assert(sizeof...(Args) % 2 == 0, "make_blend takes (metric, coefficient) pairs");
+  return internal::make_blend_from_tuple(std::make_tuple(std::forward<Args>(args)...),
+                                         std::make_index_sequence<sizeof...(Args) / 2>());
+}
+/// \endcond
+
+} // namespace Metrics
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_METRICS_BLEND_H

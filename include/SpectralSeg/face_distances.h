@@ -1,0 +1,143 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file face_distances.h
+/// \brief Distances between the faces of a triangle mesh under a dual-graph metric.
+#ifndef SPECTRALSEG_FACE_DISTANCES_H
+#define SPECTRALSEG_FACE_DISTANCES_H
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Execution.h>
+#include <SpectralSeg/Metrics/Geodesic_weight.h>
+#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/named_parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <iterator>
+#include <type_traits>
+#include <vector>
+
+namespace SpectralSeg {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+struct No_nearest_source_map {};
+
+template <typename NamedParameters>
+Execution execution_from(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const unsigned threads = static_cast<unsigned>(
+    choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_threads), 0));
+  Progress_callback progress =
+    choose_parameter(get_parameter(np, SpectralSeg::internal_np::progress_callback), Progress_callback());
+  return Execution(threads, progress);
+}
+
+template <typename Metric>
+std::vector<double> metric_weights(const Metric& metric, const Dual_graph& graph, const Execution& exec)
+{
+  exec.report(metric.name() + " weights", 0.);
+  std::vector<double> w = metric(graph, exec);
+  Metrics::check_weights(graph, w, metric.name());
+  exec.report(metric.name() + " weights", 1.);
+  return w;
+}
+
+template <typename NamedParameters>
+auto metric_from(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return choose_parameter(get_parameter(np, SpectralSeg::internal_np::metric), Metrics::Geodesic_weight());
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegDistances
+/// \brief Computes the shortest-path distance, in the weighted dual graph,
+/// from the nearest of `sources` to every face of `tm`.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///         with triangle faces oriented outward
+/// \tparam FaceRange a range of `boost::graph_traits<TriangleMesh>::face_descriptor`
+/// \tparam FaceDistanceMap a writable property map with the face descriptor
+///         as key and `double` as value
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh
+/// \param sources the source faces (at least one)
+/// \param distances receives each face's distance; `+infinity` for a face in
+///        a connected component without a source
+/// \param np optional named parameters among:
+///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Geodesic_weight()`
+///   - `nearest_source_map`: a writable property map from faces to
+///     `std::size_t`, receiving the position in `sources` of each face's
+///     nearest source (`Nearest_source_distances::unreachable` if none)
+///   - `number_of_threads`: threads for the metric (default 0, all)
+///   - `progress_callback`: a `Progress_callback` (default none)
+///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`: as for
+///     `extract_mesh_geometry()`
+///
+/// \throws Invalid_input for a non-triangle face, a non-finite coordinate,
+///         an empty source range or a metric that returns invalid weights
+/// \throws Operation_cancelled if the progress callback asks to stop
+template <typename TriangleMesh, typename FaceRange, typename FaceDistanceMap,
+          typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          , typename = std::enable_if_t<!std::is_convertible<
+              FaceRange, typename boost::graph_traits<TriangleMesh>::face_descriptor>::value>
+#endif
+          >
+void face_distances(const TriangleMesh& tm, const FaceRange& sources, FaceDistanceMap distances,
+                    const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+
+  const Execution exec = internal::execution_from(np);
+  const auto metric = internal::metric_from(np);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+
+  const Dual_graph graph = make_dual_graph(tm, np);
+  const Weighted_dual_graph weighted(graph, internal::metric_weights(metric, graph, exec));
+
+  std::vector<Dual_graph::size_type> source_ids;
+  for(typename GT::face_descriptor f : sources)
+    source_ids.push_back(static_cast<Dual_graph::size_type>(get(fim, f)));
+  exec.report("dijkstra", 0.);
+  const Nearest_source_distances result = weighted.distances(source_ids);
+  exec.report("dijkstra", 1.);
+
+  auto nearest = choose_parameter(get_parameter(np, SpectralSeg::internal_np::nearest_source_map),
+                                  internal::No_nearest_source_map());
+  for(typename GT::face_descriptor f : faces(tm))
+  {
+    const std::size_t i = get(fim, f);
+    put(distances, f, result.distance[i]);
+    if constexpr(!std::is_same<decltype(nearest), internal::No_nearest_source_map>::value)
+      put(nearest, f, result.nearest_source[i]);
+  }
+}
+
+/// \ingroup PkgSpectralSegDistances
+/// \brief Single-source version of `face_distances()`: distances from `source`.
+template <typename TriangleMesh, typename FaceDistanceMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+void face_distances(const TriangleMesh& tm,
+                    typename boost::graph_traits<TriangleMesh>::face_descriptor source,
+                    FaceDistanceMap distances, const NamedParameters& np = parameters::default_values())
+{
+  face_distances(tm, std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>(1, source),
+                 distances, np);
+}
+
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_FACE_DISTANCES_H

@@ -1,0 +1,73 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef SPECTRALSEG_INTERNAL_PARALLEL_FOR_H
+#define SPECTRALSEG_INTERNAL_PARALLEL_FOR_H
+
+#include <SpectralSeg/Execution.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <string>
+
+#ifdef SPECTRALSEG_HAS_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+#endif
+
+namespace SpectralSeg {
+namespace internal {
+
+// Runs body(i) for i in [begin, end) on exec.threads() threads. Each index is
+// processed exactly once and bodies must write to disjoint outputs, so results
+// never depend on the thread count.
+template <typename Body>
+void parallel_range(std::size_t begin, std::size_t end, unsigned threads, const Body& body)
+{
+  if(end <= begin)
+    return;
+#ifdef SPECTRALSEG_HAS_TBB
+  // More threads than TBB allows would only print a warning: cap them.
+  threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max(1, tbb::info::default_concurrency())));
+  if(threads > 1 && end - begin > 1)
+  {
+    tbb::task_arena arena(static_cast<int>(threads));
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for(std::size_t i = r.begin(); i != r.end(); ++i)
+                            body(i);
+                        });
+    });
+    return;
+  }
+#else
+  (void)threads;
+#endif
+  for(std::size_t i = begin; i != end; ++i)
+    body(i);
+}
+
+// Same as parallel_range over [0, n), cut into batches so that progress is
+// reported (and cancellation checked) from the calling thread between batches.
+template <typename Body>
+void parallel_for(std::size_t n, const Execution& exec, const std::string& stage, const Body& body)
+{
+  exec.report(stage, 0.);
+  if(n == 0)
+    return;
+  const std::size_t batches = exec.has_progress() ? std::min<std::size_t>(n, 50) : 1;
+  const std::size_t batch = (n + batches - 1) / batches;
+  for(std::size_t b = 0; b < n; b += batch)
+  {
+    const std::size_t e = std::min(n, b + batch);
+    parallel_range(b, e, exec.threads(), body);
+    exec.report(stage, double(e) / double(n));
+  }
+}
+
+} // namespace internal
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_INTERNAL_PARALLEL_FOR_H

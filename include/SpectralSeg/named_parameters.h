@@ -1,0 +1,101 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file named_parameters.h
+/// \brief SpectralSeg's named parameters, an extension of CGAL's.
+///
+/// `SpectralSeg::parameters::metric(m).number_of_threads(2).vertex_point_map(vpm)`
+/// builds one parameter pack that SpectralSeg functions and CGAL functions both
+/// read. Chaining works from a SpectralSeg parameter to any parameter (ours or
+/// CGAL's); a chain that starts with a CGAL parameter can only continue with
+/// CGAL's parameters, so start with a SpectralSeg one (or with
+/// `SpectralSeg::parameters::vertex_point_map`, which is re-exported here).
+#ifndef SPECTRALSEG_NAMED_PARAMETERS_H
+#define SPECTRALSEG_NAMED_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace SpectralSeg {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal_np {
+// One enum per SpectralSeg named parameter: X is the tag type, Y its value.
+#define SPECTRALSEG_NAMED_PARAMETERS(P) \
+  P(metric_t, metric)                   \
+  P(number_of_threads_t, number_of_threads) \
+  P(progress_callback_t, progress_callback) \
+  P(nearest_source_map_t, nearest_source_map)
+
+#define SPECTRALSEG_DECLARE_TAG(X, Y) enum X { Y };
+SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_DECLARE_TAG)
+#undef SPECTRALSEG_DECLARE_TAG
+} // namespace internal_np
+/// \endcond
+
+/// \ingroup PkgSpectralSegNamedParameters
+/// \brief A CGAL named-parameter pack that can also be chained with
+/// SpectralSeg's own parameters. Read it with `CGAL::parameters::get_parameter`
+/// and `CGAL::parameters::choose_parameter`, as any CGAL pack.
+template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
+struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  /// \cond SKIP_IN_MANUAL
+  typedef CGAL::Named_function_parameters<T, Tag, Base> cgal_type;
+  typedef Named_function_parameters<T, Tag, Base> self;
+
+  Named_function_parameters() : cgal_type() {}
+  Named_function_parameters(const T& v) : cgal_type(v) {}
+  Named_function_parameters(const T& v, const Base& b) : cgal_type(v, b) {}
+
+#define SPECTRALSEG_CHAIN(X, Y)                                           \
+  template <typename K>                                                   \
+  Named_function_parameters<K, internal_np::X, self> Y(const K& k) const  \
+  {                                                                       \
+    return Named_function_parameters<K, internal_np::X, self>(k, *this);  \
+  }
+  SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_CHAIN)
+#undef SPECTRALSEG_CHAIN
+
+#define CGAL_add_named_parameter(X, Y, Z)                                        \
+  template <typename K>                                                          \
+  Named_function_parameters<K, CGAL::internal_np::X, self> Z(const K& k) const   \
+  {                                                                              \
+    return Named_function_parameters<K, CGAL::internal_np::X, self>(k, *this);   \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+  /// \endcond
+};
+
+/// \ingroup PkgSpectralSegNamedParameters
+/// \brief Free functions that start a named-parameter chain.
+namespace parameters {
+
+using CGAL::parameters::choose_parameter;
+using CGAL::parameters::get_parameter;
+using CGAL::parameters::default_values;
+using CGAL::parameters::Default_named_parameters;
+
+/// \cond SKIP_IN_MANUAL
+#define SPECTRALSEG_START(X, Y)                                  \
+  template <typename K>                                          \
+  Named_function_parameters<K, internal_np::X> Y(const K& k)     \
+  {                                                              \
+    return Named_function_parameters<K, internal_np::X>(k);      \
+  }
+SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_START)
+#undef SPECTRALSEG_START
+
+#define CGAL_add_named_parameter(X, Y, Z)                         \
+  template <typename K>                                           \
+  Named_function_parameters<K, CGAL::internal_np::X> Z(const K& k) \
+  {                                                               \
+    return Named_function_parameters<K, CGAL::internal_np::X>(k);  \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+/// \endcond
+
+} // namespace parameters
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_NAMED_PARAMETERS_H

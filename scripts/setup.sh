@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package SpectralSeg needs to build, test, benchmark and
+# document itself. Idempotent; run as root (or with sudo available).
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libcgal-dev libgmp-dev libmpfr-dev
+  libeigen3-dev libspectra-dev
+  libboost-graph-dev libboost-program-options-dev
+  libtbb-dev libembree-dev libopenmesh-dev
+  catch2 libcli11-dev nlohmann-json3-dev libpng-dev
+  doxygen
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#PACKAGES[@]} packages already installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"

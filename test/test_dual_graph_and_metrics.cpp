@@ -1,0 +1,285 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Dual graph, metric policies, Dijkstra distances and named parameters.
+#include "test_meshes.h"
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Metrics/Angular_weight.h>
+#include <SpectralSeg/Metrics/Any_weight.h>
+#include <SpectralSeg/Metrics/Blend.h>
+#include <SpectralSeg/Metrics/Geodesic_weight.h>
+#include <SpectralSeg/Metrics/Per_edge_weight.h>
+#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/face_distances.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+using namespace SpectralSeg;
+const double pi = 3.14159265358979323846;
+} // namespace
+
+TEST_CASE("dual graph of a strip: nodes, edges, border, degrees", "[dual_graph]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(4));
+  const Dual_graph g = make_dual_graph(m);
+  CHECK(g.number_of_faces() == 8);
+  CHECK(g.number_of_edges() == 7); // 4 diagonals + 3 inner verticals
+  CHECK(g.number_of_border_edges() == 10);
+  CHECK(g.number_of_components() == 1);
+  CHECK(g.degree(0) == 2); // lower triangle: diagonal and right edge
+  CHECK(g.degree(1) == 1); // upper triangle of the first square: left side is a border
+  CHECK(g.degree(6) == 1);
+  CHECK(g.longest_edge_length() == Approx(std::sqrt(2.)));
+  for(const Dual_graph::Edge& e : g.edges())
+  {
+    CHECK_FALSE(e.concave);
+    CHECK(e.normal_angle == Approx(0.).margin(1e-12));
+  }
+}
+
+TEST_CASE("geodesic distances on a flat strip follow the exact formula", "[distances][geodesic]")
+{
+  SECTION("right triangles: one square further costs (sqrt(5) + sqrt(2)) / 3")
+  {
+    const std::size_t n = 12;
+    const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(n));
+    const Dual_graph g = make_dual_graph(m);
+    const Weighted_dual_graph wg(g, Metrics::Geodesic_weight()(g));
+    const std::vector<double> d = wg.distances(0);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      CHECK(d[2 * k] == Approx(k * (std::sqrt(5.) + std::sqrt(2.)) / 3.).epsilon(1e-12));
+      // the upper triangle of square k is entered from the left, through the lower one of square k-1
+      const double upper = k == 0 ? std::sqrt(2.) / 3. : k * (std::sqrt(5.) + std::sqrt(2.)) / 3. - std::sqrt(2.) / 3.;
+      CHECK(d[2 * k + 1] == Approx(upper).epsilon(1e-12));
+    }
+  }
+  SECTION("equilateral triangles: k hops cost k / sqrt(3)")
+  {
+    const std::size_t n = 21;
+    const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::equilateral_strip(n));
+    const Dual_graph g = make_dual_graph(m);
+    REQUIRE(g.number_of_faces() == n);
+    const Weighted_dual_graph wg(g, Metrics::Geodesic_weight()(g));
+    const std::vector<double> d = wg.distances(5);
+    for(std::size_t k = 0; k < n; ++k)
+      CHECK(d[k] == Approx(std::abs(double(k) - 5.) / std::sqrt(3.)).margin(1e-12));
+  }
+}
+
+TEST_CASE("angular weight of concave and convex folds", "[metrics][angular]")
+{
+  for(double angle : {0.3, 1.0, 2.0})
+  {
+    const Mesh concave = test_meshes::to_mesh<Mesh>(test_meshes::fold(angle, true));
+    const Mesh convex = test_meshes::to_mesh<Mesh>(test_meshes::fold(angle, false));
+    const Dual_graph gc = make_dual_graph(concave);
+    const Dual_graph gx = make_dual_graph(convex);
+    REQUIRE(gc.number_of_edges() == 1);
+    REQUIRE(gx.number_of_edges() == 1);
+    CHECK(gc.edge(0).concave);
+    CHECK_FALSE(gx.edge(0).concave);
+    CHECK(gc.edge(0).normal_angle == Approx(angle));
+    CHECK(Metrics::Angular_weight()(gc)[0] == Approx(angle / pi));
+    CHECK(Metrics::Angular_weight()(gx)[0] == Approx(0.001));
+    CHECK(Metrics::Angular_weight(0.25)(gx)[0] == Approx(0.25));
+  }
+  CHECK_THROWS_AS(Metrics::Angular_weight(-1.), Invalid_input);
+}
+
+TEST_CASE("the faces of a box meet at convex folds; a notch makes concave ones", "[metrics][angular]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::welded(test_meshes::box(2., 1., 1., 3)));
+  const Dual_graph g = make_dual_graph(m);
+  CHECK(g.number_of_border_edges() == 0);
+  std::size_t creases = 0;
+  for(const Dual_graph::Edge& e : g.edges())
+  {
+    CHECK_FALSE(e.concave);
+    if(e.normal_angle > 1.)
+    {
+      ++creases;
+      CHECK(e.normal_angle == Approx(pi / 2));
+    }
+  }
+  CHECK(creases == 12 * 3);
+}
+
+TEST_CASE("blend normalises each component to [0,1] before mixing", "[metrics][blend]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::fold(1.2, true));
+  const Mesh strip = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(3));
+  for(const Mesh* mesh : {&m, &strip})
+  {
+    const Dual_graph g = make_dual_graph(*mesh);
+    const std::vector<double> geo = Metrics::Geodesic_weight()(g);
+    const std::vector<double> ang = Metrics::Angular_weight()(g);
+    const double gmax = *std::max_element(geo.begin(), geo.end());
+    const double amax = *std::max_element(ang.begin(), ang.end());
+    // coefficients 1 and 3 are normalised to 0.25 and 0.75
+    const auto blend = Metrics::make_blend(Metrics::Geodesic_weight(), 1., Metrics::Angular_weight(), 3.);
+    CHECK(blend.coefficients()[0] == Approx(0.25));
+    const std::vector<double> w = blend(g);
+    for(std::size_t e = 0; e < w.size(); ++e)
+    {
+      CHECK(w[e] == Approx(0.25 * geo[e] / gmax + 0.75 * ang[e] / amax));
+      CHECK(w[e] <= 1. + 1e-12);
+    }
+  }
+  CHECK_THROWS_AS(Metrics::make_blend(Metrics::Geodesic_weight(), -1., Metrics::Angular_weight(), 1.), Invalid_input);
+  CHECK_THROWS_AS(Metrics::make_blend(Metrics::Geodesic_weight(), 0., Metrics::Angular_weight(), 0.), Invalid_input);
+}
+
+TEST_CASE("multi-source distances give the nearest source", "[distances]")
+{
+  const std::size_t n = 15;
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::equilateral_strip(n));
+  const Dual_graph g = make_dual_graph(m);
+  const Weighted_dual_graph wg(g, Metrics::Geodesic_weight()(g));
+  const Nearest_source_distances r = wg.distances(std::vector<Dual_graph::size_type>{0, 14, 4});
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const double d0 = double(k), d1 = 14. - double(k), d2 = std::abs(double(k) - 4.);
+    const double best = std::min({d0, d1, d2});
+    CHECK(r.distance[k] == Approx(best / std::sqrt(3.)).margin(1e-12));
+    const std::size_t expected = (d2 <= d0 && d2 <= d1) ? 2 : (d0 < d1 ? 0 : 1);
+    if(d0 != d2 && d1 != d2) // ties are resolved by Dijkstra's order
+      CHECK(r.nearest_source[k] == expected);
+  }
+  CHECK((r.nearest_source[9] == 1 || r.nearest_source[9] == 2)); // a tie: 5 hops from faces 4 and 14
+  CHECK_THROWS_AS(wg.distances(std::vector<Dual_graph::size_type>{}), Invalid_input);
+  CHECK_THROWS_AS(wg.distances(99), Invalid_input);
+}
+
+TEST_CASE("distance rows match single-source runs for any thread count", "[distances][threads]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::welded(test_meshes::box(3., 1., 1., 4)));
+  const Dual_graph g = make_dual_graph(m);
+  const Weighted_dual_graph wg(g, Metrics::make_blend(Metrics::Geodesic_weight(), 0.3, Metrics::Angular_weight(), 0.7)(g));
+  const std::vector<Dual_graph::size_type> sources{0, 17, 40, 95, 3};
+  const auto rows1 = wg.distance_rows(sources, Execution(1));
+  const auto rows2 = wg.distance_rows(sources, Execution(2));
+  const auto rows4 = wg.distance_rows(sources, Execution(4));
+  CHECK(rows1 == rows2);
+  CHECK(rows1 == rows4);
+  for(std::size_t i = 0; i < sources.size(); ++i)
+  {
+    const std::vector<double> d = wg.distances(sources[i]);
+    for(std::size_t f = 0; f < d.size(); ++f)
+      CHECK(rows1(Eigen::Index(i), Eigen::Index(f)) == d[f]);
+  }
+}
+
+TEST_CASE("faces in another component are at infinite distance", "[distances][components]")
+{
+  test_meshes::Soup s = test_meshes::square_strip(2);
+  test_meshes::Soup t = test_meshes::square_strip(2);
+  for(auto& p : t.points)
+    p[2] += 5.;
+  for(auto f : t.faces)
+  {
+    for(auto& v : f)
+      v += s.points.size();
+    s.faces.push_back(f);
+  }
+  s.points.insert(s.points.end(), t.points.begin(), t.points.end());
+  const Mesh m = test_meshes::to_mesh<Mesh>(s);
+  const Dual_graph g = make_dual_graph(m);
+  CHECK(g.number_of_components() == 2);
+  const Weighted_dual_graph wg(g, Metrics::Geodesic_weight()(g));
+  const Nearest_source_distances r = wg.distances(std::vector<Dual_graph::size_type>{0});
+  for(std::size_t f = 0; f < 4; ++f)
+    CHECK(std::isfinite(r.distance[f]));
+  for(std::size_t f = 4; f < 8; ++f)
+  {
+    CHECK(std::isinf(r.distance[f]));
+    CHECK(r.nearest_source[f] == Nearest_source_distances::unreachable);
+  }
+}
+
+TEST_CASE("face_distances: named parameters, user metric, progress and cancellation", "[api]")
+{
+  Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::equilateral_strip(9));
+  auto dmap = m.add_property_map<Mesh::Face_index, double>("f:d", 0.).first;
+  auto nmap = m.add_property_map<Mesh::Face_index, std::size_t>("f:n", 0).first;
+  std::vector<Mesh::Face_index> sources{Mesh::Face_index(0), Mesh::Face_index(8)};
+
+  SECTION("default metric is geodesic")
+  {
+    face_distances(m, Mesh::Face_index(0), dmap);
+    CHECK(get(dmap, Mesh::Face_index(3)) == Approx(3. / std::sqrt(3.)));
+  }
+  SECTION("a user metric counts hops; the nearest-source map is filled")
+  {
+    const auto hops = Metrics::make_per_edge_weight([](const Dual_graph&, const Dual_graph::Edge&) { return 1.; }, "hops");
+    face_distances(m, sources, dmap, parameters::metric(hops).nearest_source_map(nmap).number_of_threads(2));
+    CHECK(get(dmap, Mesh::Face_index(3)) == Approx(3.));
+    CHECK(get(dmap, Mesh::Face_index(6)) == Approx(2.));
+    CHECK(get(nmap, Mesh::Face_index(3)) == 0);
+    CHECK(get(nmap, Mesh::Face_index(6)) == 1);
+  }
+  SECTION("a CGAL parameter can follow a SpectralSeg one")
+  {
+    auto vpm = get(CGAL::vertex_point, m);
+    face_distances(m, Mesh::Face_index(0), dmap,
+                   parameters::metric(Metrics::Any_weight(Metrics::Geodesic_weight())).vertex_point_map(vpm));
+    CHECK(get(dmap, Mesh::Face_index(2)) == Approx(2. / std::sqrt(3.)));
+  }
+  SECTION("progress is reported and a callback can cancel")
+  {
+    std::vector<std::string> stages;
+    Progress_callback record = [&](const std::string& s, double) { stages.push_back(s); return true; };
+    face_distances(m, Mesh::Face_index(0), dmap, parameters::progress_callback(record));
+    CHECK(std::find(stages.begin(), stages.end(), "dijkstra") != stages.end());
+    Progress_callback stop = [](const std::string& s, double) { return s != "dijkstra"; };
+    put(dmap, Mesh::Face_index(4), -7.);
+    CHECK_THROWS_AS(face_distances(m, Mesh::Face_index(0), dmap, parameters::progress_callback(stop)),
+                    Operation_cancelled);
+    CHECK(get(dmap, Mesh::Face_index(4)) == -7.); // nothing written
+  }
+  SECTION("invalid metric weights are rejected")
+  {
+    const auto bad = Metrics::make_per_edge_weight([](const Dual_graph&, const Dual_graph::Edge&) {
+      return std::numeric_limits<double>::quiet_NaN(); }, "bad");
+    CHECK_THROWS_AS(face_distances(m, Mesh::Face_index(0), dmap, parameters::metric(bad)), Invalid_input);
+  }
+}
+
+TEST_CASE("non-triangle faces and non-finite coordinates are rejected by the library", "[api][input]")
+{
+  Mesh quad;
+  auto a = quad.add_vertex(K::Point_3(0, 0, 0)), b = quad.add_vertex(K::Point_3(1, 0, 0)),
+       c = quad.add_vertex(K::Point_3(1, 1, 0)), d = quad.add_vertex(K::Point_3(0, 1, 0));
+  quad.add_face(a, b, c, d);
+  CHECK_THROWS_AS(make_dual_graph(quad), Invalid_input);
+
+  Mesh tri = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(1));
+  tri.point(Mesh::Vertex_index(1)) = K::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  CHECK_THROWS_WITH(make_dual_graph(tri), Catch::Contains("non-finite"));
+}
+
+TEST_CASE("degenerate faces get their neighbours' normal and never produce NaN", "[dual_graph][degenerate]")
+{
+  // strip of 3 squares whose middle column is collapsed: x = 1 and x = 2 coincide
+  test_meshes::Soup s = test_meshes::square_strip(3);
+  s.points[4] = {1., 0., 0.};
+  s.points[5] = {1., 1., 0.};
+  const Mesh m = test_meshes::to_mesh<Mesh>(s);
+  const Dual_graph g = make_dual_graph(m);
+  CHECK(g.geometry().number_of_degenerate_faces() == 2);
+  for(std::size_t f = 0; f < g.number_of_faces(); ++f)
+    CHECK(g.geometry().normals[f].norm() == Approx(1.));
+  const auto w = Metrics::make_blend(Metrics::Geodesic_weight(), 0.5, Metrics::Angular_weight(), 0.5)(g);
+  const std::vector<double> d = Weighted_dual_graph(g, w).distances(0);
+  for(double v : d)
+    CHECK(std::isfinite(v));
+}

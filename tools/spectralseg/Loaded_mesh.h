@@ -1,0 +1,75 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Reading a mesh file for the command-line tool, with its report printed.
+#ifndef SPECTRALSEG_TOOLS_LOADED_MESH_H
+#define SPECTRALSEG_TOOLS_LOADED_MESH_H
+
+#include "Progress_printer.h"
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/IO/read_mesh_file.h>
+#include <SpectralSeg/Rendering/render_png.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace spectralseg_cli {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+
+struct Loaded_mesh
+{
+  Mesh mesh;
+  SpectralSeg::IO::Mesh_file_report report;
+  SpectralSeg::Dual_graph graph;
+
+  Loaded_mesh(const std::string& path, const Progress_printer& out)
+  {
+    report = SpectralSeg::IO::read_mesh_file(path, mesh);
+    for(const std::string& w : report.warnings)
+      out.message("warning: " + w);
+    graph = SpectralSeg::make_dual_graph(mesh);
+    const std::size_t degenerate = graph.geometry().number_of_degenerate_faces();
+    if(degenerate > 0)
+      out.message("warning: " + std::to_string(degenerate) +
+                  " degenerate (zero-area) faces kept; they take their neighbours' normal");
+  }
+
+  // the mesh face carrying the values of face `input_face` of the file
+  std::size_t mesh_face_of_input_face(long long input_face) const
+  {
+    if(input_face < 0 || static_cast<std::size_t>(input_face) >= report.face_of_input_face.size())
+      throw SpectralSeg::Invalid_input("face " + std::to_string(input_face) + " does not exist: the file has " +
+                                       std::to_string(report.face_of_input_face.size()) + " faces");
+    const std::size_t f = report.face_of_input_face[static_cast<std::size_t>(input_face)];
+    if(f == SpectralSeg::IO::Mesh_file_report::no_face)
+      throw SpectralSeg::Invalid_input("face " + std::to_string(input_face) +
+                                       " of the file was dropped (fewer than three distinct vertices)");
+    return f;
+  }
+
+  std::vector<std::array<double, 3>> points() const
+  {
+    std::vector<std::array<double, 3>> p;
+    for(const auto& q : graph.geometry().points)
+      p.push_back({q.x(), q.y(), q.z()});
+    return p;
+  }
+
+  std::vector<std::array<std::size_t, 3>> triangles() const
+  {
+    std::vector<std::array<std::size_t, 3>> t;
+    for(const auto& f : graph.geometry().triangles)
+      t.push_back({f[0], f[1], f[2]});
+    return t;
+  }
+};
+
+} // namespace spectralseg_cli
+
+#endif

@@ -1,0 +1,49 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// spectralseg: the command-line tool of SpectralSeg.
+#include "command_distance.h"
+#include "command_info.h"
+
+#include <SpectralSeg/exceptions.h>
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  using namespace spectralseg_cli;
+  CLI::App app{"spectralseg: part-aware spectral segmentation of triangle meshes"};
+  app.require_subcommand(1);
+  app.fallthrough();
+  bool quiet = false;
+  app.add_flag("-q,--quiet", quiet, "no progress or warnings on stderr");
+  app.set_version_flag("--version", "spectralseg 0.1.0");
+
+  Info_options info;
+  add_info_command(app, info);
+  Distance_options distance;
+  add_distance_command(app, distance);
+
+  CLI11_PARSE(app, argc, argv);
+  Progress_printer out(quiet);
+  try
+  {
+    if(app.got_subcommand("info"))
+      return run_info(info, out);
+    if(app.got_subcommand("distance"))
+      return run_distance(distance, out);
+  }
+  catch(const SpectralSeg::Error& e)
+  {
+    std::cerr << "error: " << e.what() << std::endl;
+    return 1;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "error: " << e.what() << std::endl;
+    return 2;
+  }
+  return 0;
+}
