@@ -213,9 +213,9 @@ TEST_CASE("face_distances: named parameters, user metric, progress and cancellat
   auto nmap = m.add_property_map<Mesh::Face_index, std::size_t>("f:n", 0).first;
   std::vector<Mesh::Face_index> sources{Mesh::Face_index(0), Mesh::Face_index(8)};
 
-  SECTION("default metric is geodesic")
+  SECTION("the geodesic metric")
   {
-    face_distances(m, Mesh::Face_index(0), dmap);
+    face_distances(m, Mesh::Face_index(0), dmap, parameters::metric(Metrics::Geodesic_weight()));
     CHECK(get(dmap, Mesh::Face_index(3)) == Approx(3. / std::sqrt(3.)));
   }
   SECTION("a user metric counts hops; the nearest-source map is filled")
@@ -238,11 +238,13 @@ TEST_CASE("face_distances: named parameters, user metric, progress and cancellat
   {
     std::vector<std::string> stages;
     Progress_callback record = [&](const std::string& s, double) { stages.push_back(s); return true; };
-    face_distances(m, Mesh::Face_index(0), dmap, parameters::progress_callback(record));
+    face_distances(m, Mesh::Face_index(0), dmap,
+                   parameters::progress_callback(record).metric(Metrics::Geodesic_weight()));
     CHECK(std::find(stages.begin(), stages.end(), "dijkstra") != stages.end());
     Progress_callback stop = [](const std::string& s, double) { return s != "dijkstra"; };
     put(dmap, Mesh::Face_index(4), -7.);
-    CHECK_THROWS_AS(face_distances(m, Mesh::Face_index(0), dmap, parameters::progress_callback(stop)),
+    CHECK_THROWS_AS(face_distances(m, Mesh::Face_index(0), dmap,
+                                   parameters::progress_callback(stop).metric(Metrics::Geodesic_weight())),
                     Operation_cancelled);
     CHECK(get(dmap, Mesh::Face_index(4)) == -7.); // nothing written
   }

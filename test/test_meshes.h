@@ -7,6 +7,8 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <array>
+#include <map>
+#include <set>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -139,6 +141,103 @@ inline Soup welded(const Soup& in)
     out.faces.push_back(g);
   }
   return out;
+}
+
+// The closed surface of a union of unit voxels (given as integer cells),
+// each exposed voxel side split into s x s squares of two triangles,
+// outward oriented. Cells must not touch along an edge or a vertex only.
+inline Soup voxel_union(const std::vector<std::array<int, 3>>& cells, int s)
+{
+  std::set<std::array<int, 3>> filled(cells.begin(), cells.end());
+  std::map<std::array<long, 3>, std::size_t> vertex;
+  Soup out;
+  auto vid = [&](std::array<long, 3> p) {
+    auto it = vertex.emplace(p, out.points.size());
+    if(it.second)
+      out.points.push_back({double(p[0]) / s, double(p[1]) / s, double(p[2]) / s});
+    return it.first->second;
+  };
+  for(const auto& c : cells)
+    for(int axis = 0; axis < 3; ++axis)
+      for(int side = 0; side < 2; ++side)
+      {
+        std::array<int, 3> nb = c;
+        nb[axis] += side ? 1 : -1;
+        if(filled.count(nb))
+          continue;
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        for(int i = 0; i < s; ++i)
+          for(int j = 0; j < s; ++j)
+          {
+            auto corner = [&](int di, int dj) {
+              std::array<long, 3> p{long(c[0]) * s, long(c[1]) * s, long(c[2]) * s};
+              p[axis] += side ? s : 0;
+              p[u] += i + di;
+              p[v] += j + dj;
+              return vid(p);
+            };
+            const std::size_t a = corner(0, 0), b = corner(1, 0), cc = corner(1, 1), d = corner(0, 1);
+            // (u, v, axis) is right-handed: u x v = +axis
+            if(side)
+            {
+              out.faces.push_back({a, b, cc});
+              out.faces.push_back({a, cc, d});
+            }
+            else
+            {
+              out.faces.push_back({a, cc, b});
+              out.faces.push_back({a, d, cc});
+            }
+          }
+      }
+  return out;
+}
+
+// A T: a horizontal bar of 12 x 2 x 2 cells on top of a vertical stem of
+// 2 x 2 x 6 cells, joined at the bar's middle.
+inline Soup t_shape(int s)
+{
+  std::vector<std::array<int, 3>> cells;
+  for(int x = 0; x < 12; ++x)
+    for(int y = 0; y < 2; ++y)
+      for(int z = 6; z < 8; ++z)
+        cells.push_back({x, y, z});
+  for(int x = 5; x < 7; ++x)
+    for(int y = 0; y < 2; ++y)
+      for(int z = 0; z < 6; ++z)
+        cells.push_back({x, y, z});
+  return voxel_union(cells, s);
+}
+
+// A UV sphere of radius r centred at the origin.
+inline Soup sphere(double r, std::size_t rings, std::size_t segments)
+{
+  Soup s;
+  const double pi = 3.14159265358979323846;
+  s.points.push_back({0., 0., r});
+  for(std::size_t i = 1; i < rings; ++i)
+  {
+    const double th = pi * double(i) / double(rings);
+    for(std::size_t j = 0; j < segments; ++j)
+    {
+      const double ph = 2. * pi * double(j) / double(segments);
+      s.points.push_back({r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph), r * std::cos(th)});
+    }
+  }
+  s.points.push_back({0., 0., -r});
+  const std::size_t south = s.points.size() - 1;
+  auto at = [&](std::size_t i, std::size_t j) { return 1 + (i - 1) * segments + (j % segments); };
+  for(std::size_t j = 0; j < segments; ++j)
+    s.faces.push_back({0, at(1, j), at(1, j + 1)});
+  for(std::size_t i = 1; i + 1 < rings; ++i)
+    for(std::size_t j = 0; j < segments; ++j)
+    {
+      s.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      s.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  for(std::size_t j = 0; j < segments; ++j)
+    s.faces.push_back({south, at(rings - 1, j + 1), at(rings - 1, j)});
+  return s;
 }
 
 } // namespace test_meshes

@@ -7,7 +7,7 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
-#include <SpectralSeg/Metrics/Geodesic_weight.h>
+#include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/dual_graph_distances.h>
 #include <SpectralSeg/named_parameters.h>
 
@@ -53,7 +53,7 @@ auto metric_from(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  return choose_parameter(get_parameter(np, SpectralSeg::internal_np::metric), Metrics::Geodesic_weight());
+  return choose_parameter(get_parameter(np, SpectralSeg::internal_np::metric), Metrics::Part_aware_weight<>());
 }
 
 } // namespace internal
@@ -75,7 +75,7 @@ auto metric_from(const NamedParameters& np)
 /// \param distances receives each face's distance; `+infinity` for a face in
 ///        a connected component without a source
 /// \param np optional named parameters among:
-///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Geodesic_weight()`
+///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Part_aware_weight<>()`, the thesis's part-aware metric
 ///   - `nearest_source_map`: a writable property map from faces to
 ///     `std::size_t`, receiving the position in `sources` of each face's
 ///     nearest source (`Nearest_source_distances::unreachable` if none)

@@ -1,13 +1,17 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// --metric and --weights options of the command-line tool.
+// --metric, --weights and VSI options of the command-line tool.
 #ifndef SPECTRALSEG_TOOLS_METRIC_CHOICE_H
 #define SPECTRALSEG_TOOLS_METRIC_CHOICE_H
 
 #include <SpectralSeg/Metrics/Angular_weight.h>
 #include <SpectralSeg/Metrics/Any_weight.h>
-#include <SpectralSeg/Metrics/Blend.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
+#include <SpectralSeg/Metrics/Part_aware_weight.h>
+#include <SpectralSeg/Metrics/VSI_weight.h>
+#ifdef SPECTRALSEG_HAS_EMBREE
+#include <SpectralSeg/Ray_casting/Embree_ray_caster.h>
+#endif
 
 #include <CLI/CLI.hpp>
 
@@ -18,20 +22,48 @@ namespace spectralseg_cli {
 
 struct Metric_options
 {
-  std::string name = "blend";
-  std::vector<double> weights{0.01, 0.99};
+  std::string name = "part-aware";
+  std::vector<double> weights{0.01, 0.195, 0.795};
+  std::string ray_caster = "aabb";
+  double vsi_fraction = 0.01;
 };
 
 inline void add_metric_options(CLI::App& cmd, Metric_options& o)
 {
-  cmd.add_option("--metric", o.name, "dual-graph metric")
-    ->check(CLI::IsMember({"geodesic", "angular", "blend"}))
+  cmd.add_option("--metric", o.name,
+                 "dual-graph metric: part-aware (geodesic+angular+VSI blend), geodesic, angular or vsi; "
+                 "'blend' is a synonym of part-aware")
+    ->check(CLI::IsMember({"part-aware", "blend", "geodesic", "angular", "vsi"}))
     ->capture_default_str();
   cmd.add_option("--weights", o.weights,
-                 "blend coefficients: geodesic,angular (each component normalised to [0,1] first)")
+                 "part-aware coefficients geodesic,angular[,vsi] (each component is normalised to [0,1] "
+                 "first; the coefficients are scaled to add up to 1)")
     ->delimiter(',')
-    ->expected(2)
+    ->expected(2, 3)
     ->capture_default_str();
+  std::vector<std::string> casters{"aabb"};
+#ifdef SPECTRALSEG_HAS_EMBREE
+  casters.push_back("embree");
+#endif
+  cmd.add_option("--ray-caster", o.ray_caster, "ray-casting backend of the VSI metric")
+    ->check(CLI::IsMember(casters))
+    ->capture_default_str();
+  cmd.add_option("--vsi-fraction", o.vsi_fraction,
+                 "fraction of the faces whose shape image is ray-cast (the rest are interpolated)")
+    ->check(CLI::Range(0.0, 1.0))
+    ->capture_default_str();
+}
+
+template <typename RayCaster>
+SpectralSeg::Metrics::Any_weight make_vsi_metric(const Metric_options& o)
+{
+  using namespace SpectralSeg::Metrics;
+  VSI_options vsi;
+  vsi.images.sample_fraction = o.vsi_fraction;
+  if(o.name == "vsi")
+    return VSI_weight<RayCaster>(vsi);
+  const double gamma = o.weights.size() > 2 ? o.weights[2] : 0.;
+  return Part_aware_weight<RayCaster>(o.weights.at(0), o.weights.at(1), gamma, vsi);
 }
 
 inline SpectralSeg::Metrics::Any_weight make_metric(const Metric_options& o)
@@ -41,8 +73,11 @@ inline SpectralSeg::Metrics::Any_weight make_metric(const Metric_options& o)
     return Geodesic_weight();
   if(o.name == "angular")
     return Angular_weight();
-  return Blend<Geodesic_weight, Angular_weight>({o.weights.at(0), o.weights.at(1)}, Geodesic_weight(),
-                                                Angular_weight());
+#ifdef SPECTRALSEG_HAS_EMBREE
+  if(o.ray_caster == "embree")
+    return make_vsi_metric<SpectralSeg::Ray_casting::Embree_ray_caster>(o);
+#endif
+  return make_vsi_metric<SpectralSeg::Ray_casting::AABB_ray_caster>(o);
 }
 
 } // namespace spectralseg_cli

@@ -120,11 +120,13 @@ template <typename... Args>
 auto make_blend(Args&&... args);
 
 /// \cond SKIP_IN_MANUAL
+} // namespace Metrics
+
 namespace internal {
 template <typename... C, std::size_t... I, typename Tuple>
-Blend<C...> make_blend_impl(std::index_sequence<I...>, Tuple&& t)
+Metrics::Blend<C...> make_blend_impl(std::index_sequence<I...>, Tuple&& t)
 {
-  return Blend<C...>({static_cast<double>(std::get<2 * I + 1>(t))...}, std::get<2 * I>(t)...);
+  return Metrics::Blend<C...>({static_cast<double>(std::get<2 * I + 1>(t))...}, std::get<2 * I>(t)...);
 }
 template <typename Tuple, std::size_t... I>
 auto make_blend_from_tuple(Tuple&& t, std::index_sequence<I...> seq)
@@ -133,11 +135,13 @@ auto make_blend_from_tuple(Tuple&& t, std::index_sequence<I...> seq)
 }
 } // namespace internal
 
+namespace Metrics {
+
 template <typename... Args>
 auto make_blend(Args&&... args)
 {
   static_assert(sizeof...(Args) % 2 == 0, "make_blend takes (metric, coefficient) pairs");
-  return internal::make_blend_from_tuple(std::make_tuple(std::forward<Args>(args)...),
+  return ::SpectralSeg::internal::make_blend_from_tuple(std::make_tuple(std::forward<Args>(args)...),
                                          std::make_index_sequence<sizeof...(Args) / 2>());
 }
 /// \endcond

@@ -1,0 +1,17 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Documentation only: the example programs, shown in full in the manual's
+// "Examples" pages. No code includes this file.
+
+/// \example distance_field.cpp
+/// Distances from one face of a `CGAL::Surface_mesh` under several metrics,
+/// computed by `SpectralSeg::face_distances()` into face property maps, and
+/// the farthest face under each. Usage:
+/// `distance_field [mesh.off] [source_face]`.
+
+/// \example custom_metric.cpp
+/// Two ways to write a metric: a function of one dual edge wrapped by
+/// `SpectralSeg::Metrics::make_per_edge_weight()`, and a class modelling
+/// `DualEdgeWeight`; both are blended with the angular metric and used on a
+/// `CGAL::Polyhedron_3`. Usage: `custom_metric [mesh.off]`.

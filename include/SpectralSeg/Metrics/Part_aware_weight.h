@@ -1,0 +1,50 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Part_aware_weight.h
+/// \brief The part-aware metric: geodesic, angular and VSI weights blended (thesis 3.5).
+#ifndef SPECTRALSEG_METRICS_PART_AWARE_WEIGHT_H
+#define SPECTRALSEG_METRICS_PART_AWARE_WEIGHT_H
+
+#include <SpectralSeg/Metrics/Angular_weight.h>
+#include <SpectralSeg/Metrics/Blend.h>
+#include <SpectralSeg/Metrics/Geodesic_weight.h>
+#include <SpectralSeg/Metrics/VSI_weight.h>
+
+#include <string>
+
+namespace SpectralSeg {
+namespace Metrics {
+
+/// \ingroup PkgSpectralSegMetrics
+/// \brief The library's default metric: a `Blend` of `Geodesic_weight`,
+/// `Angular_weight` and `VSI_weight`, each normalised to \f$[0, 1]\f$, with
+/// the thesis's segmentation coefficients \f$\alpha = 0.01\f$,
+/// \f$\beta = 0.195\f$, \f$\gamma = 0.795\f$.
+///
+/// \tparam RayCaster the ray-casting backend of the VSI component
+///
+/// \cgalModels `DualEdgeWeight`
+template <typename RayCaster = Ray_casting::AABB_ray_caster>
+class Part_aware_weight : public Blend<Geodesic_weight, Angular_weight, VSI_weight<RayCaster>>
+{
+  typedef Blend<Geodesic_weight, Angular_weight, VSI_weight<RayCaster>> Base;
+
+public:
+  /// \param alpha geodesic coefficient
+  /// \param beta angular coefficient
+  /// \param gamma VSI coefficient
+  /// \param vsi parameters of the VSI component
+  /// \param convex_weight angular weight of convex folds
+  explicit Part_aware_weight(double alpha = 0.01, double beta = 0.195, double gamma = 0.795,
+                             const VSI_options& vsi = VSI_options(), double convex_weight = 0.001)
+    : Base({alpha, beta, gamma}, Geodesic_weight(), Angular_weight(convex_weight), VSI_weight<RayCaster>(vsi))
+  {}
+
+  /// `"part-aware"`
+  std::string name() const { return "part-aware"; }
+};
+
+} // namespace Metrics
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_METRICS_PART_AWARE_WEIGHT_H

@@ -1,0 +1,157 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file VSI_weight.h
+/// \brief The VSI (volumetric shape image) edge weight of the dual graph (thesis 3.4).
+#ifndef SPECTRALSEG_METRICS_VSI_WEIGHT_H
+#define SPECTRALSEG_METRICS_VSI_WEIGHT_H
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Execution.h>
+#include <SpectralSeg/Metrics/VSI/Reference_points.h>
+#include <SpectralSeg/Metrics/VSI/Shape_images.h>
+#include <SpectralSeg/Ray_casting/AABB_ray_caster.h>
+#include <SpectralSeg/internal/parallel_for.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace SpectralSeg {
+namespace Metrics {
+
+/// \ingroup PkgSpectralSegVSI
+/// \brief All parameters of the VSI metric.
+struct VSI_options
+{
+  /// reference points (16 rays in an 80-degree cone, smoothing)
+  VSI::Reference_point_options reference;
+  /// shape images (50 antipodal ray pairs, 1% of the faces sampled)
+  VSI::Shape_image_options images;
+};
+
+/// \ingroup PkgSpectralSegVSI
+/// \brief Everything the VSI metric computes, for inspection and pictures.
+struct VSI_result
+{
+  VSI::Reference_points reference_points; ///< one point per face
+  VSI::Shape_images images;               ///< one image per face
+  std::vector<double> weights;            ///< one weight per dual edge
+  std::size_t filled_weights = 0;         ///< weights taken from neighbouring edges (no common measured pair)
+};
+
+/// \ingroup PkgSpectralSegVSI
+/// \brief The VSI edge weights from the shape images: the image difference
+/// (`VSI::image_difference()`) of the two faces of each dual edge.
+///
+/// An edge whose faces share no measured ray pair (open meshes, where rays
+/// escape) takes the mean weight of the computable edges around its two
+/// faces, repeatedly, so that no `NaN` reaches a distance; with no
+/// computable edge at all, every weight is 0. `filled` receives the number
+/// of such edges.
+inline std::vector<double> vsi_edge_weights(const Dual_graph& graph, const VSI::Shape_images& images,
+                                            const Execution& exec = Execution(), std::size_t* filled = nullptr)
+{
+  const std::size_t ne = graph.number_of_edges();
+  const std::size_t m = static_cast<std::size_t>(images.reaches.cols());
+  std::vector<double> w(ne);
+  ::SpectralSeg::internal::parallel_for(ne, exec, "vsi weights", [&](std::size_t e) {
+    const Dual_graph::Edge& edge = graph.edge(static_cast<Dual_graph::size_type>(e));
+    w[e] = VSI::image_difference(images.reaches.row(edge.face[0]).data(), images.reaches.row(edge.face[1]).data(), m);
+  });
+  std::size_t missing = 0;
+  for(double v : w)
+    missing += std::isnan(v) ? 1 : 0;
+  if(filled)
+    *filled = missing;
+  while(missing > 0)
+  {
+    std::vector<std::pair<std::size_t, double>> updates;
+    for(std::size_t e = 0; e < ne; ++e)
+    {
+      if(!std::isnan(w[e]))
+        continue;
+      double sum = 0.;
+      int count = 0;
+      for(Dual_graph::size_type f : graph.edge(static_cast<Dual_graph::size_type>(e)).face)
+        graph.for_each_neighbour(f, [&](Dual_graph::size_type, Dual_graph::size_type g) {
+          if(!std::isnan(w[g]))
+          {
+            sum += w[g];
+            ++count;
+          }
+        });
+      if(count > 0)
+        updates.emplace_back(e, sum / count);
+    }
+    if(updates.empty())
+    {
+      for(double& v : w)
+        if(std::isnan(v))
+          v = 0.;
+      break;
+    }
+    for(const auto& u : updates)
+      w[u.first] = u.second;
+    missing -= updates.size();
+  }
+  return w;
+}
+
+/// \ingroup PkgSpectralSegVSI
+/// \brief Runs the whole VSI pipeline: reference points, shape images, edge weights.
+template <typename RayCaster>
+VSI_result compute_vsi(const Dual_graph& graph, const RayCaster& caster, const VSI_options& options = VSI_options(),
+                       const Execution& exec = Execution())
+{
+  VSI_result r;
+  r.reference_points = VSI::compute_reference_points(graph, caster, options.reference, exec);
+  r.images = VSI::compute_shape_images(r.reference_points.points, caster, options.images, exec);
+  r.weights = vsi_edge_weights(graph, r.images, exec, &r.filled_weights);
+  return r;
+}
+
+/// \ingroup PkgSpectralSegVSI
+/// \brief The VSI distance, which makes the borders between parts expensive
+/// to cross: each face is mapped to a reference point inside the shape, the
+/// visible reach of the volume around that point is sampled along fixed
+/// directions (its volumetric shape image), and a dual edge weighs the
+/// difference between the images of its two faces.
+///
+/// Inside a part the images change slowly; across a part boundary the
+/// visible volume changes abruptly. See `compute_vsi()` for the steps and
+/// `VSI_options` for the parameters.
+///
+/// \tparam RayCaster a model of `RayCaster`: `Ray_casting::AABB_ray_caster`
+///         (default) or `Ray_casting::Embree_ray_caster`
+///
+/// \cgalModels `DualEdgeWeight`
+template <typename RayCaster = Ray_casting::AABB_ray_caster>
+class VSI_weight
+{
+public:
+  /// \param options the parameters of the reference points and shape images
+  explicit VSI_weight(const VSI_options& options = VSI_options()) : options_(options) {}
+
+  /// the parameters
+  const VSI_options& options() const { return options_; }
+
+  /// the name used by the command-line tool and in reports
+  std::string name() const { return "vsi"; }
+
+  /// one weight per dual edge of `graph`
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution()) const
+  {
+    exec.report("ray casting setup", 0.);
+    const RayCaster caster(graph.geometry());
+    exec.report("ray casting setup", 1.);
+    return compute_vsi(graph, caster, options_, exec).weights;
+  }
+
+private:
+  VSI_options options_;
+};
+
+} // namespace Metrics
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_METRICS_VSI_WEIGHT_H

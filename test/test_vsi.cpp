@@ -1,0 +1,157 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The VSI metric: reference points, shape images, and the part-boundary effect.
+#include "test_meshes.h"
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Metrics/Geodesic_weight.h>
+#include <SpectralSeg/Metrics/Part_aware_weight.h>
+#include <SpectralSeg/Metrics/VSI_weight.h>
+#include <SpectralSeg/Ray_casting/AABB_ray_caster.h>
+#include <SpectralSeg/dual_graph_distances.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+namespace {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+using namespace SpectralSeg;
+
+// The face facing `normal` whose centroid is nearest to `p`.
+Dual_graph::size_type face_near(const Dual_graph& g, const Eigen::Vector3d& p, const Eigen::Vector3d& normal)
+{
+  Dual_graph::size_type best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for(Dual_graph::size_type f = 0; f < g.number_of_faces(); ++f)
+  {
+    const double d = (g.geometry().centroids[f] - p).norm();
+    if(g.geometry().normals[f].dot(normal) > 0.9 && d < best_d)
+    {
+      best_d = d;
+      best = f;
+    }
+  }
+  return best;
+}
+} // namespace
+
+TEST_CASE("ray directions: cone and antipodal pairs", "[vsi]")
+{
+  const auto cone = Metrics::VSI::cone_directions(16, 80. * 3.14159265358979323846 / 180.);
+  REQUIRE(cone.size() == 16);
+  CHECK(cone[0].z() == 1.);
+  for(const auto& d : cone)
+  {
+    CHECK(d.norm() == Approx(1.));
+    CHECK(d.z() >= std::cos(40. * 3.14159265358979323846 / 180.) - 1e-12);
+  }
+  const auto pairs = Metrics::VSI::antipodal_directions(50);
+  REQUIRE(pairs.size() == 100);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for(std::size_t k = 0; k < 50; ++k)
+  {
+    CHECK((pairs[2 * k] + pairs[2 * k + 1]).norm() == Approx(0.).margin(1e-15));
+    sum += pairs[2 * k].cwiseAbs();
+  }
+  // spread evenly: the mean absolute coordinate of a uniform direction is 1/2
+  CHECK(sum.x() / 50. == Approx(0.5).epsilon(0.15));
+  CHECK(sum.z() / 50. == Approx(0.5).epsilon(0.15));
+}
+
+TEST_CASE("the reference points of a sphere lie near its centre", "[vsi]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::sphere(2., 24, 48));
+  const Dual_graph g = make_dual_graph(m);
+  const Ray_casting::AABB_ray_caster caster(g.geometry());
+  const Metrics::VSI::Reference_points r = Metrics::VSI::compute_reference_points(g, caster);
+  double worst = 0.;
+  for(std::size_t f = 0; f < g.number_of_faces(); ++f)
+  {
+    worst = std::max(worst, r.points[f].norm());
+    CHECK(r.measured[f] == 1);
+    CHECK(r.diameters[f] == Approx(4.).epsilon(0.05));
+  }
+  CHECK(worst < 0.1 * 2.);
+  CHECK(r.relocated == 0);
+
+  // every image of a sphere's centre reaches one diameter in every direction
+  Metrics::VSI_options o;
+  o.images.sample_fraction = 1.;
+  const Metrics::VSI_result vsi = Metrics::compute_vsi(g, caster, o);
+  CHECK(vsi.images.reaches.minCoeff() > 3.9f);
+  CHECK(vsi.images.reaches.maxCoeff() < 4.05f);
+}
+
+TEST_CASE("VSI distance jumps across the junction of a T, geodesic does not", "[vsi]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::t_shape(4));
+  const Dual_graph g = make_dual_graph(m);
+  REQUIRE(g.number_of_border_edges() == 0);
+  const Eigen::Vector3d front(0., -1., 0.);
+  // pairs of front faces one unit apart: across the junction, in the stem, in the bar
+  const auto across = std::make_pair(face_near(g, {6., 0., 5.5}, front), face_near(g, {6., 0., 6.5}, front));
+  const auto stem = std::make_pair(face_near(g, {6., 0., 2.5}, front), face_near(g, {6., 0., 3.5}, front));
+  const auto bar = std::make_pair(face_near(g, {2., 0., 7.}, front), face_near(g, {3., 0., 7.}, front));
+
+  const Weighted_dual_graph geodesic(g, Metrics::Geodesic_weight()(g));
+  auto distance = [](const Weighted_dual_graph& w, std::pair<Dual_graph::size_type, Dual_graph::size_type> p) {
+    return w.distances(p.first)[p.second];
+  };
+  CHECK(distance(geodesic, across) == Approx(distance(geodesic, stem)));
+  CHECK(distance(geodesic, across) == Approx(distance(geodesic, bar)));
+
+  for(double fraction : {0.01, 1.})
+  {
+    INFO("sample fraction " << fraction);
+    Metrics::VSI_options o;
+    o.images.sample_fraction = fraction;
+    const Weighted_dual_graph vsi(g, Metrics::VSI_weight<>(o)(g, Execution(2)));
+    const double jump = distance(vsi, across);
+    CHECK(jump > 4. * distance(vsi, stem));
+    CHECK(jump > 4. * distance(vsi, bar));
+  }
+}
+
+TEST_CASE("VSI weights do not depend on the number of threads", "[vsi][threads]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::t_shape(2));
+  const Dual_graph g = make_dual_graph(m);
+  const Metrics::Part_aware_weight<> metric;
+  const std::vector<double> w1 = metric(g, Execution(1));
+  const std::vector<double> w2 = metric(g, Execution(2));
+  const std::vector<double> w3 = metric(g, Execution(3));
+  CHECK(w1 == w2);
+  CHECK(w1 == w3);
+}
+
+TEST_CASE("open meshes: rays that escape are ignored, no NaN reaches a weight", "[vsi][open]")
+{
+  // a box without its top: many rays leave through the opening
+  test_meshes::Soup s = test_meshes::welded(test_meshes::box(2., 2., 1., 4));
+  s.faces.erase(s.faces.begin() + 32, s.faces.begin() + 64); // the z = sz side
+  const Mesh m = test_meshes::to_mesh<Mesh>(s);
+  const Dual_graph g = make_dual_graph(m);
+  REQUIRE(g.number_of_border_edges() > 0);
+  const Ray_casting::AABB_ray_caster caster(g.geometry());
+  Metrics::VSI_options o;
+  o.images.sample_fraction = 1.;
+  const Metrics::VSI_result r = Metrics::compute_vsi(g, caster, o);
+  bool some_escape = false;
+  for(Eigen::Index i = 0; i < r.images.reaches.size(); ++i)
+    some_escape = some_escape || std::isnan(r.images.reaches.data()[i]);
+  CHECK(some_escape);
+  for(double w : r.weights)
+  {
+    CHECK(std::isfinite(w));
+    CHECK(w >= 0.);
+  }
+  const std::vector<double> pa = Metrics::Part_aware_weight<>()(g);
+  const std::vector<double> d = Weighted_dual_graph(g, pa).distances(0);
+  for(double v : d)
+    CHECK(std::isfinite(v));
+}
