@@ -7,6 +7,8 @@
 // usage: bench_dijkstra MESH [levels=1] [repeats=10]
 // Prints a markdown table: mesh, faces, dual-graph build, weights, Dijkstra
 // (median of the repeats), all single-threaded.
+#include "subdivide.h"
+
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
@@ -14,7 +16,6 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
 #include <chrono>
@@ -34,12 +35,6 @@ double seconds(const F& f)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// 1-to-4 split of every triangle at its edge midpoints (geometry unchanged).
-void midpoint_subdivide(Mesh& m)
-{
-  CGAL::Subdivision_method_3::PTQ(m, CGAL::Linear_mask_3<Mesh, boost::property_map<Mesh, CGAL::vertex_point_t>::type>(&m, get(CGAL::vertex_point, m)),
-                                  CGAL::parameters::number_of_iterations(1));
-}
 } // namespace
 
 int main(int argc, char** argv)
@@ -60,7 +55,7 @@ int main(int argc, char** argv)
   for(int level = 0; level <= levels; ++level)
   {
     if(level > 0)
-      midpoint_subdivide(mesh);
+      mesh = spectralseg_bench::midpoint_subdivision(mesh);
     SpectralSeg::Dual_graph g;
     const double t_build = seconds([&] { g = SpectralSeg::make_dual_graph(mesh); });
     std::vector<double> w;

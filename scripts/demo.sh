@@ -9,14 +9,15 @@ OUT=${OUT:-output}
 mkdir -p "$OUT"
 MESH=data/human_man.off
 ./build/tools/spectralseg info "$MESH"
-# Part-aware distances from a face on the left hand: the concave joints show
-# up as jumps under the angular metric and not under the geodesic one.
-./build/tools/spectralseg distance "$MESH" --from 0 --metric geodesic \
+# Distances from a face on the belly: the concave joints (neck, armpits,
+# hips) show up as steps under the angular metric and not under the
+# geodesic one; the part-aware metric (the default) separates the limbs.
+./build/tools/spectralseg distance "$MESH" --from 6863 --metric geodesic \
   --field "$OUT/human_geodesic.txt" --png "$OUT/human_geodesic.png"
-./build/tools/spectralseg distance "$MESH" --from 0 --metric angular \
+./build/tools/spectralseg distance "$MESH" --from 6863 --metric angular \
   --field "$OUT/human_angular.txt" --png "$OUT/human_angular.png"
-./build/tools/spectralseg distance "$MESH" --from 0 --metric blend --weights 0.01,0.99 \
-  --field "$OUT/human_blend.txt" --png "$OUT/human_blend.png"
+./build/tools/spectralseg distance "$MESH" --from 6863 --metric part-aware \
+  --field "$OUT/human_part_aware.txt" --png "$OUT/human_part_aware.png"
 echo
 echo "outputs written to $(cd "$OUT" && pwd):"
 ls -1 "$OUT" | sed 's/^/  /'

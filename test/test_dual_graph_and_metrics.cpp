@@ -285,3 +285,28 @@ TEST_CASE("degenerate faces get their neighbours' normal and never produce NaN",
   for(double v : d)
     CHECK(std::isfinite(v));
 }
+
+#include <SpectralSeg/Sampling/farthest_point_samples.h>
+
+TEST_CASE("farthest point sampling spreads samples along a strip", "[sampling]")
+{
+  const std::size_t n = 21;
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::equilateral_strip(n));
+  const Dual_graph g = make_dual_graph(m);
+  const Weighted_dual_graph wg(g, Metrics::Geodesic_weight()(g));
+  const Sampling::Farthest_point_samples s = Sampling::farthest_point_samples(wg, 3, 7);
+  REQUIRE(s.faces.size() == 3);
+  // the ends of the strip first (the diameter), then its middle
+  CHECK(std::min(s.faces[0], s.faces[1]) == 0);
+  CHECK(std::max(s.faces[0], s.faces[1]) == n - 1);
+  CHECK(s.faces[2] == n / 2);
+  CHECK(s.nearest_sample[1] == (s.faces[0] == 0 ? 0u : 1u));
+  CHECK(s.distance[n / 2] == 0.);
+  CHECK_THROWS_AS(Sampling::farthest_point_samples(wg, n + 1), Invalid_input);
+  // asking for every face returns every face once
+  const Sampling::Farthest_point_samples all = Sampling::farthest_point_samples(wg, n);
+  std::vector<Dual_graph::size_type> sorted = all.faces;
+  std::sort(sorted.begin(), sorted.end());
+  CHECK(std::unique(sorted.begin(), sorted.end()) == sorted.end());
+  CHECK(sorted.size() == n);
+}

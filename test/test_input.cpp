@@ -5,7 +5,7 @@
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/IO/write_face_values.h>
 #include <SpectralSeg/Metrics/Angular_weight.h>
-#include <SpectralSeg/Metrics/Blend.h>
+#include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
 #include <SpectralSeg/dual_graph_distances.h>
 
@@ -35,14 +35,14 @@ std::string write_temp(const std::string& name, const std::string& text)
   return p.string();
 }
 
-// Reads, builds the dual graph and runs a blended distance from face 0:
-// what every command does first. Returns the report.
+// Reads, builds the dual graph and runs a part-aware distance (geodesic,
+// angular and VSI) from face 0: what every command does first. Returns the report.
 IO::Mesh_file_report load_and_measure(const std::string& path, Dual_graph& g)
 {
   Mesh m;
   IO::Mesh_file_report r = IO::read_mesh_file(path, m);
   g = make_dual_graph(m);
-  const auto w = Metrics::make_blend(Metrics::Geodesic_weight(), 0.01, Metrics::Angular_weight(), 0.99)(g);
+  const std::vector<double> w = Metrics::Part_aware_weight<>()(g);
   const std::vector<double> d = Weighted_dual_graph(g, w).distances(0);
   for(std::size_t f = 0; f < d.size(); ++f)
   {

@@ -61,7 +61,7 @@ public:
   /// bundled property of a CSR arc: the dual edge it belongs to
   struct Arc
   {
-    size_type dual_edge;
+    size_type dual_edge; ///< index of the dual edge in `edges()`
   };
 
   /// the Boost CSR graph type
@@ -73,7 +73,10 @@ public:
   /// (oriented as in `f0`)
   struct Adjacency
   {
-    size_type f0, f1, v0, v1;
+    size_type f0; ///< first face
+    size_type f1; ///< second face
+    size_type v0; ///< first vertex of the shared edge, in the orientation of `f0`
+    size_type v1; ///< second vertex of the shared edge
   };
 
   Dual_graph() = default;

@@ -43,6 +43,7 @@ struct Nearest_source_distances
 class Weighted_dual_graph
 {
 public:
+  /// face index type
   typedef Dual_graph::size_type size_type;
 
   /// \param graph the dual graph (must outlive this object)
@@ -56,6 +57,9 @@ public:
     for(auto e : boost::make_iterator_range(boost::edges(g)))
       arc_weights_[get(boost::edge_index, g, e)] = weights[g[e].dual_edge];
   }
+
+  /// a temporary graph would dangle: keep the graph alive while this object is used
+  Weighted_dual_graph(Dual_graph&&, const std::vector<double>&) = delete;
 
   /// the dual graph
   const Dual_graph& graph() const { return graph_; }

@@ -15,6 +15,7 @@ namespace SpectralSeg {
 class Error : public std::runtime_error
 {
 public:
+  /// \param what the message
   explicit Error(const std::string& what) : std::runtime_error(what) {}
 };
 
@@ -26,6 +27,7 @@ public:
 class Invalid_input : public Error
 {
 public:
+  /// \param what the message
   explicit Invalid_input(const std::string& what) : Error(what) {}
 };
 
@@ -34,6 +36,7 @@ public:
 class Io_error : public Error
 {
 public:
+  /// \param what the message
   explicit Io_error(const std::string& what) : Error(what) {}
 };
 
@@ -43,6 +46,7 @@ public:
 class Operation_cancelled : public Error
 {
 public:
+  /// \param stage the stage that was running
   explicit Operation_cancelled(const std::string& stage)
     : Error("operation cancelled during stage '" + stage + "'"), stage_(stage) {}
   /// the stage that was running when the computation stopped

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <string>
 
+#include <unistd.h>
+
 namespace spectralseg_cli {
 
 // Prints "stage: NN%" lines on stderr, at most one per stage and percent
@@ -17,7 +19,7 @@ namespace spectralseg_cli {
 class Progress_printer
 {
 public:
-  explicit Progress_printer(bool quiet) : quiet_(quiet) {}
+  explicit Progress_printer(bool quiet) : quiet_(quiet), tty_(isatty(fileno(stderr)) != 0) {}
 
   SpectralSeg::Progress_callback callback()
   {
@@ -50,14 +52,15 @@ private:
       return;
     last_percent_ = percent;
     if(percent >= 100)
-      std::fprintf(stderr, "\r%-32s done (%.2f s)\n", stage.c_str(),
+      std::fprintf(stderr, "%s%-32s done (%.2f s)\n", tty_ ? "\r" : "", stage.c_str(),
                    std::chrono::duration<double>(now - start_).count());
-    else if(percent % 10 == 0)
+    else if(tty_ && percent % 10 == 0) // redirected output gets the final line only
       std::fprintf(stderr, "\r%-32s %3d%%", stage.c_str(), percent);
     std::fflush(stderr);
   }
 
   bool quiet_;
+  bool tty_;
   std::string stage_;
   std::chrono::steady_clock::time_point start_;
   int last_percent_ = -1;

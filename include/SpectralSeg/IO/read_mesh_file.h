@@ -107,7 +107,9 @@ std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<Po
 /// - non-manifold edges and vertices are split (CGAL's
 ///   `orient_polygon_soup()`), so faces across a non-manifold edge are not
 ///   adjacent;
-/// - faces are oriented consistently, and each closed component outward.
+/// - faces are oriented consistently, and, when the whole mesh is closed,
+///   each component outward (an open mesh keeps the orientation the
+///   consistent-orientation pass gives it; concavity depends on it).
 ///
 /// Degenerate (zero-area) faces are kept and reported: the library handles
 /// them (see `Mesh_geometry`). Open meshes and several connected components

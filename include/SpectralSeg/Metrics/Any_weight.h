@@ -36,7 +36,7 @@ public:
   std::string name() const { return holder_->name(); }
 
   /// the wrapped metric's weights
-  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution(1)) const
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution()) const
   {
     return holder_->weights(graph, exec);
   }

@@ -72,7 +72,7 @@ public:
   }
 
   /// one weight per dual edge of `graph`
-  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution(1)) const
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution()) const
   {
     std::vector<double> w(graph.number_of_edges(), 0.);
     accumulate(graph, exec, w, std::index_sequence_for<Components...>());

@@ -30,7 +30,7 @@ public:
   std::string name() const { return "geodesic"; }
 
   /// one weight per dual edge of `graph`
-  std::vector<double> operator()(const Dual_graph& graph, const Execution& = Execution(1)) const
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& = Execution()) const
   {
     std::vector<double> w(graph.number_of_edges());
     for(Dual_graph::size_type e = 0; e < graph.number_of_edges(); ++e)

@@ -39,7 +39,7 @@ public:
   std::string name() const { return name_; }
 
   /// one weight per dual edge, computed in parallel
-  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution(1)) const
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution()) const
   {
     std::vector<double> w(graph.number_of_edges());
     ::SpectralSeg::internal::parallel_for(w.size(), exec, name_ + " weights",

@@ -40,10 +40,10 @@ namespace Ray_casting {
 ///   the centre of its bounding box is at the origin before its coordinates
 ///   are rounded to `float`, and ray origins are translated the same way, so
 ///   that the precision does not depend on where the mesh lies in space.
-///   Distances agree with `AABB_ray_caster`'s to about \f$10^{-6}\f$ times
-///   the bounding-box diagonal; when a ray passes through a shared edge or
-///   vertex the two backends may report different (adjacent) faces at the
-///   same distance.
+///   Distances agree with `AABB_ray_caster`'s to within \f$10^{-4}\f$
+///   relative or a few \f$10^{-6}\f$ times the bounding-box diagonal; when
+///   a ray passes through a shared edge or vertex the two backends may
+///   report different (adjacent) faces at the same distance.
 /// - **Robustness.** The scene is built with `RTC_SCENE_FLAG_ROBUST` (a
 ///   watertight triangle test: a ray through a shared edge hits one of the
 ///   two faces, it never passes between them) and `RTC_BUILD_QUALITY_HIGH`.
@@ -109,6 +109,7 @@ public:
       centre_ = 0.5 * (lo + hi);
 
     scene_.reset(rtcNewScene(device_.get()));
+    bool triangles_attached = face_of_primitive_.empty();
     if(scene_ && !face_of_primitive_.empty())
     {
       Geometry_handle mesh(rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE));
@@ -132,6 +133,7 @@ public:
           rtcSetGeometryBuildQuality(mesh.get(), RTC_BUILD_QUALITY_HIGH);
           rtcCommitGeometry(mesh.get());
           rtcAttachGeometry(scene_.get(), mesh.get());
+          triangles_attached = true;
         }
       }
     }
@@ -143,14 +145,16 @@ public:
     }
     const RTCError error = rtcGetDeviceError(device_.get());
     rtcSetDeviceErrorFunction(device_.get(), nullptr, nullptr);
-    if(error != RTC_ERROR_NONE || !scene_)
+    if(error != RTC_ERROR_NONE || !scene_ || !triangles_attached)
       throw Error("Embree_ray_caster: Embree failed to build the scene of " +
                   std::to_string(face_of_primitive_.size()) + " triangles (" +
                   error_text(error == RTC_ERROR_NONE ? RTC_ERROR_UNKNOWN : error) +
                   (log.message.empty() ? std::string() : ": " + log.message) + ")");
   }
 
+  /// not copyable: the object owns its Embree device and scene
   Embree_ray_caster(const Embree_ray_caster&) = delete;
+  /// not copyable: the object owns its Embree device and scene
   Embree_ray_caster& operator=(const Embree_ray_caster&) = delete;
 
   /// releases the Embree scene and device
@@ -200,8 +204,8 @@ public:
 
   /// `first_hit()` for `count` rays from the same origin, skipping the same
   /// face: `distances[i]` is the distance along `directions[i]`. The rays
-  /// are traced in packets of 8 (`rtcIntersect8`), which Embree traverses
-  /// together; the results are those of `first_hit()`.
+  /// are traced in packets of 8 (`rtcIntersect8`), which saves per-call
+  /// overhead; the results are exactly those of `first_hit()`.
   void first_hits(const Eigen::Vector3d& origin, const Eigen::Vector3d* directions, std::size_t count,
                   size_type skip, double* distances) const
   {
