@@ -23,7 +23,13 @@ namespace internal_np {
   P(metric_t, metric)                   \
   P(number_of_threads_t, number_of_threads) \
   P(progress_callback_t, progress_callback) \
-  P(nearest_source_map_t, nearest_source_map)
+  P(nearest_source_map_t, nearest_source_map) \
+  P(kernel_t, kernel)                   \
+  P(embedding_method_t, embedding_method) \
+  P(number_of_samples_t, number_of_samples) \
+  P(sampling_method_t, sampling_method) \
+  P(boundary_enhancement_t, boundary_enhancement) \
+  P(graph_cut_options_t, graph_cut_options)
 
 #define SPECTRALSEG_DECLARE_TAG(X, Y) enum X { Y };
 SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_DECLARE_TAG)

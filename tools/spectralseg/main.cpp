@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // spectralseg: the command-line tool of SpectralSeg.
 #include "command_distance.h"
+#include "command_eval.h"
 #include "command_info.h"
+#include "command_segment.h"
 
 #include <SpectralSeg/exceptions.h>
 
@@ -25,6 +27,10 @@ int main(int argc, char** argv)
   add_info_command(app, info);
   Distance_options distance;
   add_distance_command(app, distance);
+  Segment_options segment;
+  add_segment_command(app, segment);
+  Eval_options eval;
+  add_eval_command(app, eval);
 
   CLI11_PARSE(app, argc, argv);
   Progress_printer out(quiet);
@@ -34,6 +40,10 @@ int main(int argc, char** argv)
       return run_info(info, out);
     if(app.got_subcommand("distance"))
       return run_distance(distance, out);
+    if(app.got_subcommand("segment"))
+      return run_segment(segment, out);
+    if(app.got_subcommand("eval"))
+      return run_eval(eval, out);
   }
   catch(const SpectralSeg::Error& e)
   {

@@ -1,0 +1,304 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Quality benchmark on a directory laid out like the Princeton Segmentation
+// Benchmark (off/<id>.off, seg/<id>/<id>_<j>.seg, index.tsv): segments each
+// model with SpectralSeg's k-way method (k = k_by_model) and, optionally,
+// CGAL's SDF segmentation (its defaults), and scores each result against all
+// human segmentations of the model (Rand index error, averaged over the
+// humans, then over the models).
+//
+// usage: bench_psb_quality PSB_DIR [options]
+//   --methods kway,sdf      methods to run (default kway)
+//   --shard i/N             run only the models whose row number is i mod N
+//   --out FILE.tsv          per-model rows (default: stdout only)
+//   --alpha A --beta B --gamma C   part-aware coefficients
+//   --no-graph-cut  --sampling exact|nystrom|auto  --kernel exponential|gaussian
+//   --ray-caster aabb|embree  --threads N
+// Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/IO/read_mesh_file.h>
+#include <SpectralSeg/Kernels/Exponential_kernel.h>
+#include <SpectralSeg/Kernels/Gaussian_kernel.h>
+#include <SpectralSeg/Metrics/Part_aware_weight.h>
+#include <SpectralSeg/evaluation.h>
+#include <SpectralSeg/k_way_segmentation.h>
+#ifdef SPECTRALSEG_HAS_EMBREE
+#include <SpectralSeg/Ray_casting/Embree_ray_caster.h>
+#endif
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/mesh_segmentation.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Row
+{
+  std::string id, category, method;
+  std::size_t faces = 0, k = 0, segments = 0;
+  double ri_error = 0, seconds = 0;
+};
+
+struct Options
+{
+  std::string dir, out;
+  std::vector<std::string> methods{"kway"};
+  std::size_t shard = 0, shards = 1;
+  double alpha = 0.01, beta = 0.195, gamma = 0.795;
+  bool graph_cut = true;
+  std::string sampling = "auto", kernel = "exponential", ray_caster = "aabb";
+  unsigned threads = 0;
+};
+
+std::vector<std::string> split(const std::string& s, char sep)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while(std::getline(ss, item, sep))
+    out.push_back(item);
+  return out;
+}
+
+void print_tables(const std::vector<Row>& rows)
+{
+  std::map<std::string, std::map<std::string, std::pair<double, int>>> by_cat; // method -> category -> (sum, n)
+  std::map<std::string, std::pair<double, int>> overall;
+  std::map<std::string, double> time;
+  for(const Row& r : rows)
+  {
+    auto& c = by_cat[r.method][r.category];
+    c.first += r.ri_error;
+    ++c.second;
+    overall[r.method].first += r.ri_error;
+    ++overall[r.method].second;
+    time[r.method] += r.seconds;
+  }
+  std::vector<std::string> methods;
+  for(const auto& m : overall)
+    methods.push_back(m.first);
+  std::printf("\n| category |");
+  for(const auto& m : methods)
+    std::printf(" %s |", m.c_str());
+  std::printf("\n|---|");
+  for(std::size_t i = 0; i < methods.size(); ++i)
+    std::printf("---:|");
+  std::printf("\n");
+  for(const auto& cat : by_cat.begin()->second)
+  {
+    std::printf("| %s |", cat.first.c_str());
+    for(const auto& m : methods)
+    {
+      const auto& c = by_cat[m][cat.first];
+      std::printf(" %.3f |", c.second ? c.first / c.second : 0.);
+    }
+    std::printf("\n");
+  }
+  std::printf("| **all (%d models)** |", overall.begin()->second.second);
+  for(const auto& m : methods)
+    std::printf(" **%.3f** |", overall[m].first / overall[m].second);
+  std::printf("\n| total time (s) |");
+  for(const auto& m : methods)
+    std::printf(" %.1f |", time[m]);
+  std::printf("\n");
+}
+
+std::vector<Row> read_rows(const std::string& path)
+{
+  std::vector<Row> rows;
+  std::ifstream in(path);
+  std::string line;
+  while(std::getline(in, line))
+  {
+    const auto f = split(line, '\t');
+    if(f.size() < 8 || f[0] == "id")
+      continue;
+    Row r;
+    r.id = f[0];
+    r.category = f[1];
+    r.method = f[2];
+    r.faces = std::stoul(f[3]);
+    r.k = std::stoul(f[4]);
+    r.segments = std::stoul(f[5]);
+    r.ri_error = std::stod(f[6]);
+    r.seconds = std::stod(f[7]);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+template <typename RayCaster>
+std::vector<double> part_aware(const Options& o, const SpectralSeg::Dual_graph& g, const SpectralSeg::Execution& exec)
+{
+  return SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma)(g, exec);
+}
+
+std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, std::size_t k)
+{
+  const SpectralSeg::Execution exec(o.threads);
+  std::vector<double> w;
+#ifdef SPECTRALSEG_HAS_EMBREE
+  if(o.ray_caster == "embree")
+    w = part_aware<SpectralSeg::Ray_casting::Embree_ray_caster>(o, g, exec);
+  else
+#endif
+    w = part_aware<SpectralSeg::Ray_casting::AABB_ray_caster>(o, g, exec);
+  const SpectralSeg::Weighted_dual_graph wg(g, w);
+  SpectralSeg::K_way_options ko;
+  ko.boundary_enhancement = o.graph_cut;
+  ko.embedding.method = o.sampling == "exact"   ? SpectralSeg::Embedding::Method::exact
+                        : o.sampling == "nystrom" ? SpectralSeg::Embedding::Method::nystrom
+                                                  : SpectralSeg::Embedding::Method::automatic;
+  const auto r = o.kernel == "gaussian" ? SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Gaussian_kernel(), ko, exec)
+                                        : SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec);
+  return r.labels;
+}
+
+std::vector<int> run_sdf(Mesh& mesh)
+{
+  auto sdf = mesh.add_property_map<Mesh::Face_index, double>("f:sdf").first;
+  auto seg = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:seg").first;
+  CGAL::sdf_values(mesh, sdf);
+  CGAL::segmentation_from_sdf_values(mesh, sdf, seg);
+  std::vector<int> labels;
+  for(auto f : mesh.faces())
+    labels.push_back(static_cast<int>(get(seg, f)));
+  mesh.remove_property_map(sdf);
+  mesh.remove_property_map(seg);
+  return labels;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if(!args.empty() && args[0] == "--merge")
+  {
+    std::vector<Row> all;
+    for(std::size_t i = 1; i < args.size(); ++i)
+    {
+      const auto r = read_rows(args[i]);
+      all.insert(all.end(), r.begin(), r.end());
+    }
+    print_tables(all);
+    return 0;
+  }
+  if(args.empty())
+  {
+    std::fprintf(stderr, "usage: %s PSB_DIR [--methods kway,sdf] [--shard i/N] [--out F.tsv] ...\n", argv[0]);
+    return 1;
+  }
+  Options o;
+  o.dir = args[0];
+  for(std::size_t i = 1; i < args.size(); ++i)
+  {
+    const std::string& a = args[i];
+    auto next = [&]() -> std::string {
+      if(i + 1 >= args.size())
+        throw std::runtime_error("missing value after " + a);
+      return args[++i];
+    };
+    if(a == "--methods")
+      o.methods = split(next(), ',');
+    else if(a == "--shard")
+    {
+      const auto p = split(next(), '/');
+      o.shard = std::stoul(p.at(0));
+      o.shards = std::stoul(p.at(1));
+    }
+    else if(a == "--out")
+      o.out = next();
+    else if(a == "--alpha")
+      o.alpha = std::stod(next());
+    else if(a == "--beta")
+      o.beta = std::stod(next());
+    else if(a == "--gamma")
+      o.gamma = std::stod(next());
+    else if(a == "--no-graph-cut")
+      o.graph_cut = false;
+    else if(a == "--sampling")
+      o.sampling = next();
+    else if(a == "--kernel")
+      o.kernel = next();
+    else if(a == "--ray-caster")
+      o.ray_caster = next();
+    else if(a == "--threads")
+      o.threads = static_cast<unsigned>(std::stoul(next()));
+    else
+      throw std::runtime_error("unknown option " + a);
+  }
+
+  std::ifstream index(fs::path(o.dir) / "index.tsv");
+  if(!index)
+  {
+    std::fprintf(stderr, "no index.tsv in %s\n", o.dir.c_str());
+    return 1;
+  }
+  std::ofstream out;
+  if(!o.out.empty())
+  {
+    out.open(o.out);
+    out << "id\tcategory\tmethod\tfaces\tk\tsegments\tri_error\tseconds\n";
+  }
+  std::vector<Row> rows;
+  std::string line;
+  std::getline(index, line); // header
+  for(std::size_t row = 0; std::getline(index, line); ++row)
+  {
+    if(row % o.shards != o.shard)
+      continue;
+    const auto f = split(line, '\t');
+    const std::string id = f.at(0), category = f.at(1);
+    const std::size_t k = std::stoul(f.at(3));
+    Mesh mesh;
+    const auto report = SpectralSeg::IO::read_mesh_file((fs::path(o.dir) / "off" / (id + ".off")).string(), mesh);
+    const SpectralSeg::Dual_graph g = SpectralSeg::make_dual_graph(mesh);
+    std::vector<std::vector<int>> humans;
+    for(const auto& e : fs::directory_iterator(fs::path(o.dir) / "seg" / id))
+    {
+      const std::vector<int> file_order = SpectralSeg::Evaluation::read_labels(e.path().string());
+      std::vector<int> mesh_order(g.number_of_faces());
+      for(std::size_t face = 0; face < mesh_order.size(); ++face)
+        mesh_order[face] = file_order.at(report.input_face_of_face[face]);
+      humans.push_back(mesh_order);
+    }
+    for(const std::string& method : o.methods)
+    {
+      const auto t0 = std::chrono::steady_clock::now();
+      const std::vector<int> labels = method == "sdf" ? run_sdf(mesh) : run_kway(o, g, k);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      double ri = 0;
+      for(const auto& h : humans)
+        ri += SpectralSeg::Evaluation::rand_index_error(labels, h);
+      ri /= double(humans.size());
+      Row r{id, category, method, g.number_of_faces(), k, 0, ri, seconds};
+      r.segments = std::set<int>(labels.begin(), labels.end()).size();
+      rows.push_back(r);
+      std::printf("%s\t%s\t%s\t%zu\t%zu\t%zu\t%.4f\t%.2f\n", id.c_str(), category.c_str(), method.c_str(), r.faces, k,
+                  r.segments, ri, seconds);
+      std::fflush(stdout);
+      if(out)
+        out << id << '\t' << category << '\t' << method << '\t' << r.faces << '\t' << k << '\t' << r.segments << '\t'
+            << ri << '\t' << seconds << '\n';
+    }
+  }
+  print_tables(rows);
+  return 0;
+}

@@ -1,0 +1,145 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Kmeans.h
+/// \brief K-means in the spectral embedding, with max-min seeding (thesis 4.3, fig. 4.6).
+#ifndef SPECTRALSEG_CLUSTERING_KMEANS_H
+#define SPECTRALSEG_CLUSTERING_KMEANS_H
+
+#include <SpectralSeg/Execution.h>
+#include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/parallel_for.h>
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <vector>
+
+namespace SpectralSeg {
+namespace Clustering {
+
+/// \ingroup PkgSpectralSegClustering
+/// \brief The result of `kmeans()`.
+struct Kmeans_result
+{
+  /// the cluster of each point, in `[0, k)`
+  std::vector<int> labels;
+  /// one centroid (proxy) per row
+  Eigen::MatrixXd centroids;
+  /// the points that seeded the clusters
+  std::vector<std::size_t> seeds;
+  /// assignment/update rounds run
+  std::size_t iterations = 0;
+  /// whether the labels stopped changing before `max_iterations`
+  bool converged = false;
+};
+
+/// \ingroup PkgSpectralSegClustering
+/// \brief Max-min seeds: the first two points are the ends of an
+/// approximate diameter (from point `start`, hop to the farthest point until
+/// the pair is stable), each next one the point farthest from all chosen
+/// ones. Ties go to the smallest index.
+inline std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd& points, std::size_t k, std::size_t start = 0)
+{
+  const Eigen::Index n = points.rows();
+  std::vector<std::size_t> seeds;
+  if(n == 0 || k == 0)
+    return seeds;
+  auto farthest_from = [&](const Eigen::VectorXd& d) {
+    Eigen::Index arg = 0;
+    d.maxCoeff(&arg);
+    return static_cast<std::size_t>(arg);
+  };
+  auto distances_to = [&](std::size_t i) {
+    return Eigen::VectorXd((points.rowwise() - points.row(Eigen::Index(i))).rowwise().squaredNorm());
+  };
+  std::size_t a = start, b = farthest_from(distances_to(a));
+  for(int hop = 0; hop < 10; ++hop)
+  {
+    const std::size_t c = farthest_from(distances_to(b));
+    if(c == a)
+      break;
+    a = b;
+    b = c;
+  }
+  seeds.push_back(a);
+  Eigen::VectorXd nearest = distances_to(a);
+  while(seeds.size() < k)
+  {
+    const std::size_t next = seeds.size() == 1 ? b : farthest_from(nearest);
+    if(nearest(Eigen::Index(next)) <= 0. && seeds.size() > 1)
+      break; // every remaining point coincides with a seed
+    seeds.push_back(next);
+    nearest = nearest.cwiseMin(distances_to(next));
+  }
+  return seeds;
+}
+
+/// \ingroup PkgSpectralSegClustering
+/// \brief Lloyd's K-means on the rows of `points`, seeded with the given
+/// rows (or with `max_min_seeds()` when `seeds` is empty).
+///
+/// Each round assigns every point to its nearest centroid (ties to the
+/// smaller cluster index) and moves every centroid to the mean of its
+/// points; a cluster that loses all its points keeps its centroid. Sums are
+/// taken in point order, so the result does not depend on the thread count.
+///
+/// \throws Invalid_input if `k` is 0 or exceeds the number of points
+inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::vector<std::size_t> seeds = {},
+                            std::size_t max_iterations = 100, const Execution& exec = Execution())
+{
+  const std::size_t n = static_cast<std::size_t>(points.rows());
+  if(k == 0 || k > n)
+    throw Invalid_input("K-means: cannot make " + std::to_string(k) + " clusters of " + std::to_string(n) + " points");
+  if(seeds.empty())
+    seeds = max_min_seeds(points, k);
+  Kmeans_result r;
+  r.seeds = seeds;
+  const std::size_t kk = seeds.size();
+  r.centroids.resize(static_cast<Eigen::Index>(kk), points.cols());
+  for(std::size_t c = 0; c < kk; ++c)
+    r.centroids.row(Eigen::Index(c)) = points.row(Eigen::Index(seeds[c]));
+  r.labels.assign(n, -1);
+  for(r.iterations = 0; r.iterations < max_iterations; ++r.iterations)
+  {
+    std::vector<char> changed(n, 0);
+    ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t i) {
+      int best = 0;
+      double best_d = std::numeric_limits<double>::infinity();
+      for(std::size_t c = 0; c < kk; ++c)
+      {
+        const double d = (points.row(Eigen::Index(i)) - r.centroids.row(Eigen::Index(c))).squaredNorm();
+        if(d < best_d)
+        {
+          best_d = d;
+          best = int(c);
+        }
+      }
+      changed[i] = r.labels[i] != best;
+      r.labels[i] = best;
+    });
+    bool any = false;
+    for(char c : changed)
+      any = any || c;
+    if(!any)
+    {
+      r.converged = true;
+      break;
+    }
+    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(Eigen::Index(kk), points.cols());
+    std::vector<std::size_t> count(kk, 0);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      sum.row(r.labels[i]) += points.row(Eigen::Index(i));
+      ++count[std::size_t(r.labels[i])];
+    }
+    for(std::size_t c = 0; c < kk; ++c)
+      if(count[c] > 0)
+        r.centroids.row(Eigen::Index(c)) = sum.row(Eigen::Index(c)) / double(count[c]);
+  }
+  return r;
+}
+
+} // namespace Clustering
+} // namespace SpectralSeg
+
+#endif

@@ -1,0 +1,68 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef SPECTRALSEG_EMBEDDING_INTERNAL_AFFINITY_H
+#define SPECTRALSEG_EMBEDDING_INTERNAL_AFFINITY_H
+
+#include <SpectralSeg/Execution.h>
+#include <SpectralSeg/internal/parallel_for.h>
+
+#include <Eigen/Core>
+
+#include <cmath>
+
+namespace SpectralSeg {
+namespace Embedding {
+namespace internal {
+
+typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
+
+// Mean of the finite entries (distances to other components are infinite).
+inline double mean_finite(const Row_matrix& g)
+{
+  double sum = 0.;
+  std::size_t count = 0;
+  for(Eigen::Index i = 0; i < g.rows(); ++i)
+  {
+    double row = 0.;
+    for(Eigen::Index j = 0; j < g.cols(); ++j)
+      if(std::isfinite(g(i, j)))
+      {
+        row += g(i, j);
+        ++count;
+      }
+    sum += row;
+  }
+  return count ? sum / double(count) : 0.;
+}
+
+// Turns distances into affinities in place; returns the kernel width.
+template <typename Kernel>
+double distances_to_affinities(Row_matrix& g, const Kernel& kernel, const Execution& exec)
+{
+  const double mean = mean_finite(g);
+  const double width = mean > 0 ? kernel.width(mean) : 1.;
+  ::SpectralSeg::internal::parallel_range(0, static_cast<std::size_t>(g.rows()), exec.threads(), [&](std::size_t i) {
+    for(Eigen::Index j = 0; j < g.cols(); ++j)
+      g(Eigen::Index(i), j) = std::isfinite(g(Eigen::Index(i), j)) ? kernel(g(Eigen::Index(i), j), width) : 0.;
+  });
+  return width;
+}
+
+// Makes eigenvector signs deterministic: the entry of largest magnitude is positive.
+template <typename Matrix>
+void fix_signs(Matrix& vectors)
+{
+  for(Eigen::Index c = 0; c < vectors.cols(); ++c)
+  {
+    Eigen::Index arg = 0;
+    vectors.col(c).cwiseAbs().maxCoeff(&arg);
+    if(vectors(arg, c) < 0)
+      vectors.col(c) = -vectors.col(c);
+  }
+}
+
+} // namespace internal
+} // namespace Embedding
+} // namespace SpectralSeg
+
+#endif

@@ -1,0 +1,182 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file nystrom_spectral_embedding.h
+/// \brief The spectral embedding from a few sampled rows, by the Nyström
+/// method (thesis ch. 5), and the sampling quality measure Gamma.
+#ifndef SPECTRALSEG_EMBEDDING_NYSTROM_SPECTRAL_EMBEDDING_H
+#define SPECTRALSEG_EMBEDDING_NYSTROM_SPECTRAL_EMBEDDING_H
+
+#include <SpectralSeg/Embedding/Spectral_embedding.h>
+#include <SpectralSeg/Embedding/exact_spectral_embedding.h>
+#include <SpectralSeg/Embedding/internal/affinity.h>
+#include <SpectralSeg/Sampling/farthest_point_samples.h>
+#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/exceptions.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+namespace SpectralSeg {
+namespace Embedding {
+
+/// \ingroup PkgSpectralSegEmbedding
+/// \brief The Nyström sampling quality \f$\Gamma = \mathrm{tr}(C) -
+/// \mathrm{tr}(B^T A^{-1} B)\f$ (thesis eq. 5.4): the summed squared distance,
+/// in the kernel's feature space, from the unsampled faces to the span of the
+/// sampled ones. Lower is better.
+///
+/// \param rows the affinity rows of the samples (samples x faces)
+/// \param samples the sampled faces, in the order of `rows`
+inline double nystrom_gamma(const internal::Row_matrix& rows, const std::vector<Dual_graph::size_type>& samples)
+{
+  const Eigen::Index l = static_cast<Eigen::Index>(samples.size());
+  const Eigen::Index n = rows.cols();
+  Eigen::MatrixXd a(l, l);
+  for(Eigen::Index i = 0; i < l; ++i)
+    for(Eigen::Index j = 0; j < l; ++j)
+      a(i, j) = 0.5 * (rows(i, samples[std::size_t(j)]) + rows(j, samples[std::size_t(i)]));
+  std::vector<char> sampled(static_cast<std::size_t>(n), 0);
+  for(auto s : samples)
+    sampled[s] = 1;
+  // pseudo-inverse through the eigen-decomposition: robust to near-duplicate samples
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
+  const Eigen::VectorXd& d = eig.eigenvalues();
+  const double tol = 1e-10 * std::max(1., d.cwiseAbs().maxCoeff());
+  double traced = 0.;
+  Eigen::VectorXd y(l);
+  for(Eigen::Index f = 0; f < n; ++f)
+  {
+    if(sampled[std::size_t(f)])
+      continue;
+    y.noalias() = eig.eigenvectors().transpose() * rows.col(f);
+    for(Eigen::Index i = 0; i < l; ++i)
+      if(d(i) > tol)
+        traced += y(i) * y(i) / d(i);
+  }
+  return double(n - l) - traced; // W_ii = 1, so tr(C) is the number of unsampled faces
+}
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Greedy Gamma-sampling (thesis 5.4): each new sample is the best of
+// `candidates` random faces for the measure Gamma.
+template <typename AffinityKernel>
+std::vector<Dual_graph::size_type> gamma_samples(const Weighted_dual_graph& graph, std::size_t count,
+                                                 std::size_t candidates, const AffinityKernel& kernel,
+                                                 unsigned int seed, const Execution& exec)
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, n - 1);
+  std::vector<Dual_graph::size_type> samples{static_cast<Dual_graph::size_type>(pick(random))};
+  Row_matrix rows = graph.distance_rows(samples, Execution(1));
+  while(samples.size() < count)
+  {
+    exec.report("gamma sampling", double(samples.size()) / double(count));
+    std::vector<Dual_graph::size_type> tries;
+    for(std::size_t c = 0; c < candidates; ++c)
+    {
+      const auto f = static_cast<Dual_graph::size_type>(pick(random));
+      if(std::find(samples.begin(), samples.end(), f) == samples.end())
+        tries.push_back(f);
+    }
+    if(tries.empty())
+      continue;
+    const Row_matrix candidate_rows = graph.distance_rows(tries, exec);
+    std::vector<double> gamma(tries.size());
+    ::SpectralSeg::internal::parallel_range(0, tries.size(), exec.threads(), [&](std::size_t t) {
+      Row_matrix g(rows.rows() + 1, rows.cols());
+      g.topRows(rows.rows()) = rows;
+      g.row(rows.rows()) = candidate_rows.row(Eigen::Index(t));
+      distances_to_affinities(g, kernel, Execution(1));
+      std::vector<Dual_graph::size_type> s = samples;
+      s.push_back(tries[t]);
+      gamma[t] = nystrom_gamma(g, s);
+    });
+    const std::size_t best = static_cast<std::size_t>(std::min_element(gamma.begin(), gamma.end()) - gamma.begin());
+    samples.push_back(tries[best]);
+    rows.conservativeResize(rows.rows() + 1, Eigen::NoChange);
+    rows.row(rows.rows() - 1) = candidate_rows.row(Eigen::Index(best));
+  }
+  return samples;
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegEmbedding
+/// \brief Embeds every face from the distance rows of a few sampled faces.
+///
+/// The samples (`options.samples`, default `dimensions + 1`) are chosen by
+/// farthest-point sampling (`Sampling::farthest_point_samples()`, starting
+/// from a face drawn with `options.seed`) or by Gamma-sampling. Only their
+/// rows of the distance matrix are computed; the kernel width comes from
+/// those rows. With \f$A = E \Delta E^T\f$ the sample-to-sample affinities,
+/// every face's coordinates are the Nyström extension
+/// \f$W_{s,f}^T E \Delta^{-1/2}\f$, i.e. \f$[E; B^T E \Delta^{-1}]\f$ scaled
+/// by \f$\Delta^{1/2}\f$; the first column is dropped and only positive
+/// eigenvalues are kept. Memory grows as faces times samples.
+///
+/// \tparam AffinityKernel a model of `AffinityKernel`
+/// \throws Invalid_input if `dimensions` is 0 or the samples outnumber the faces
+template <typename AffinityKernel>
+Spectral_embedding nystrom_spectral_embedding(const Weighted_dual_graph& graph, std::size_t dimensions,
+                                              const AffinityKernel& kernel,
+                                              const Embedding_options& options = Embedding_options(),
+                                              const Execution& exec = Execution())
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  const std::size_t l = options.samples > 0 ? options.samples : dimensions + 1;
+  if(dimensions == 0 || l > n || l < 2)
+    throw Invalid_input("Nyström embedding: " + std::to_string(l) + " samples for " + std::to_string(dimensions) +
+                        " dimensions on a mesh of " + std::to_string(n) + " faces");
+  Spectral_embedding out;
+  out.exact = false;
+  if(options.sampling == Sampling_method::gamma)
+    out.samples = internal::gamma_samples(graph, l, options.gamma_candidates, kernel, options.seed, exec);
+  else
+  {
+    std::mt19937 random(options.seed);
+    const auto start = static_cast<Dual_graph::size_type>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random));
+    out.samples = Sampling::farthest_point_samples(graph, l, start, 10, exec).faces;
+  }
+
+  internal::Row_matrix w = graph.distance_rows(out.samples, exec);
+  out.kernel_width = internal::distances_to_affinities(w, kernel, exec);
+  out.gamma = nystrom_gamma(w, out.samples);
+
+  exec.report("eigen-solve", 0.);
+  const Eigen::Index ll = static_cast<Eigen::Index>(l);
+  Eigen::MatrixXd a(ll, ll);
+  for(Eigen::Index i = 0; i < ll; ++i)
+    for(Eigen::Index j = 0; j < ll; ++j)
+      a(i, j) = 0.5 * (w(i, out.samples[std::size_t(j)]) + w(j, out.samples[std::size_t(i)]));
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
+  if(eig.info() != Eigen::Success)
+    throw Error("Nyström embedding: the eigen-solver did not converge on the sample affinities");
+  const Eigen::VectorXd delta = eig.eigenvalues().reverse();
+  Eigen::MatrixXd e = eig.eigenvectors().rowwise().reverse();
+  internal::fix_signs(e);
+  // E~ = W_s^T E Delta^-1 for all faces (equal to E on the samples)
+  Eigen::MatrixXd extended(static_cast<Eigen::Index>(n), ll);
+  const double tol = 1e-12 * std::max(1., std::abs(delta(0)));
+  Eigen::MatrixXd e_scaled = e;
+  for(Eigen::Index c = 0; c < ll; ++c)
+    e_scaled.col(c) = delta(c) > tol ? Eigen::VectorXd(e.col(c) / delta(c)) : Eigen::VectorXd::Zero(ll);
+  ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t f) {
+    extended.row(Eigen::Index(f)).noalias() = w.col(Eigen::Index(f)).transpose() * e_scaled;
+  });
+  exec.report("eigen-solve", 1.);
+  internal::scaled_columns(delta, extended, dimensions, out);
+  return out;
+}
+
+} // namespace Embedding
+} // namespace SpectralSeg
+
+#endif

@@ -1,0 +1,146 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file graph_cut_boundaries.h
+/// \brief Boundary enhancement of a k-way segmentation by an alpha-expansion
+/// graph cut (thesis 4.3.3).
+#ifndef SPECTRALSEG_REFINEMENT_GRAPH_CUT_BOUNDARIES_H
+#define SPECTRALSEG_REFINEMENT_GRAPH_CUT_BOUNDARIES_H
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Metrics/Angular_weight.h>
+#include <SpectralSeg/exceptions.h>
+
+#include <CGAL/boost/graph/alpha_expansion_graphcut.h>
+#ifdef SPECTRALSEG_USE_MAXFLOW
+#include <CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h>
+#endif
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace SpectralSeg {
+namespace Refinement {
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief The max-flow implementation used by the alpha expansion.
+enum class Graph_cut_backend
+{
+  /// Boost's Boykov-Kolmogorov max-flow on an adjacency list (CGAL's default)
+  boost_adjacency_list,
+  /// the same on a compressed sparse row graph (faster to build)
+  boost_compressed_sparse_row,
+  /// Kolmogorov's MaxFlow code shipped with CGAL's Surface_mesh_segmentation
+  /// (GPL); available when `SPECTRALSEG_USE_MAXFLOW` is defined before
+  /// including this header; fastest, and may give other (equally minimal) cuts
+  maxflow
+};
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief Parameters of the graph-cut boundary enhancement (thesis defaults).
+struct Graph_cut_options
+{
+  /// weight \f$\mu\f$ of the smoothness term
+  double smoothness = 0.3;
+  /// strength \f$\nu\f$ of the logarithmic mapping of angular weights
+  double angular_mapping = 10.;
+  /// angular weight \f$\epsilon\f$ of convex folds
+  double convex_weight = 0.001;
+  /// max-flow implementation: MaxFlow when available (the fastest), else
+  /// Boost on compressed sparse rows
+#ifdef SPECTRALSEG_USE_MAXFLOW
+  Graph_cut_backend backend = Graph_cut_backend::maxflow;
+#else
+  Graph_cut_backend backend = Graph_cut_backend::boost_compressed_sparse_row;
+#endif
+};
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief Relabels the faces by minimising
+/// \f$E = \sum_f h_1(f, p_f) + \mu \sum_{(f,g)} h_2(f, g)\f$ with alpha expansion.
+///
+/// The data term of face \f$f\f$ for the segment with proxy \f$p\f$ is
+/// \f$h_1 = -\log\frac{1/d(f,p)}{\sum_q 1/d(f,q)}\f$, \f$d\f$ the Euclidean
+/// distance in the embedding between the face and the proxies (the K-means
+/// centroids). Across a pair of adjacent faces with different labels, the
+/// smoothness term is \f$h_2 = \frac{l(e)}{l_{max}}\left(1 -
+/// \frac{\log(\nu a(e) + 1)}{\log(\nu + 1)}\right)\f$, with \f$l(e)\f$ the
+/// shared edge length and \f$a(e)\f$ its angular weight: short boundaries
+/// along concave creases are cheap.
+///
+/// \param graph the dual graph
+/// \param embedding one row per face
+/// \param proxies one row per segment
+/// \param labels the labels to refine (in `[0, proxies.rows())`), replaced by the result
+/// \param options \f$\mu\f$, \f$\nu\f$ and the backend
+inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
+                                 const Eigen::MatrixXd& proxies, std::vector<int>& labels,
+                                 const Graph_cut_options& options = Graph_cut_options())
+{
+  const std::size_t n = graph.number_of_faces();
+  const std::size_t k = static_cast<std::size_t>(proxies.rows());
+  if(labels.size() != n || static_cast<std::size_t>(embedding.rows()) != n)
+    throw Invalid_input("graph cut: one label and one embedding row per face are needed");
+  if(k < 2)
+    return;
+
+  // Data term, cost[label][face].
+  std::vector<std::vector<double>> cost(k, std::vector<double>(n));
+  const double scale = std::max(1e-300, (proxies.rowwise() - proxies.colwise().mean()).norm());
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    std::vector<double> inv(k);
+    double total = 0.;
+    for(std::size_t c = 0; c < k; ++c)
+    {
+      const double d = std::max((embedding.row(Eigen::Index(f)) - proxies.row(Eigen::Index(c))).norm(), 1e-12 * scale);
+      inv[c] = 1. / d;
+      total += inv[c];
+    }
+    for(std::size_t c = 0; c < k; ++c)
+      cost[c][f] = -std::log(inv[c] / total);
+  }
+
+  // Smoothness term per dual edge.
+  const Metrics::Angular_weight angular(options.convex_weight);
+  const double longest = graph.longest_edge_length() > 0 ? graph.longest_edge_length() : 1.;
+  const double log_norm = std::log(options.angular_mapping + 1.);
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  std::vector<double> edge_costs;
+  edges.reserve(graph.number_of_edges());
+  edge_costs.reserve(graph.number_of_edges());
+  for(const Dual_graph::Edge& e : graph.edges())
+  {
+    const double mapped = log_norm > 0 ? std::log(options.angular_mapping * angular.weight(e) + 1.) / log_norm : 0.;
+    edges.emplace_back(e.face[0], e.face[1]);
+    edge_costs.push_back(options.smoothness * (e.length / longest) * std::max(0., 1. - mapped));
+  }
+
+  std::vector<std::size_t> l(labels.begin(), labels.end());
+  switch(options.backend)
+  {
+  case Graph_cut_backend::boost_adjacency_list:
+    CGAL::alpha_expansion_graphcut(edges, edge_costs, cost, l, CGAL::Alpha_expansion_boost_adjacency_list_tag());
+    break;
+  case Graph_cut_backend::maxflow:
+#ifdef SPECTRALSEG_USE_MAXFLOW
+    CGAL::alpha_expansion_graphcut(edges, edge_costs, cost, l, CGAL::Alpha_expansion_MaxFlow_tag());
+    break;
+#else
+    throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code from CGAL)");
+#endif
+  case Graph_cut_backend::boost_compressed_sparse_row:
+    CGAL::alpha_expansion_graphcut(edges, edge_costs, cost, l,
+                                   CGAL::Alpha_expansion_boost_compressed_sparse_row_tag());
+    break;
+  }
+  for(std::size_t f = 0; f < n; ++f)
+    labels[f] = static_cast<int>(l[f]);
+}
+
+} // namespace Refinement
+} // namespace SpectralSeg
+
+#endif

@@ -1,0 +1,220 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file k_way_segmentation.h
+/// \brief Segmentation into k parts by spectral clustering of the part-aware
+/// metric (thesis ch. 4 and 5).
+#ifndef SPECTRALSEG_K_WAY_SEGMENTATION_H
+#define SPECTRALSEG_K_WAY_SEGMENTATION_H
+
+#include <SpectralSeg/Clustering/Kmeans.h>
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Embedding/exact_spectral_embedding.h>
+#include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
+#include <SpectralSeg/Kernels/Exponential_kernel.h>
+#include <SpectralSeg/Refinement/connected_segments.h>
+#include <SpectralSeg/Refinement/graph_cut_boundaries.h>
+#include <SpectralSeg/face_distances.h>
+
+#include <chrono>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief Parameters of `segment_k_way()`.
+struct K_way_options
+{
+  /// exact or Nyström embedding, samples, seed
+  Embedding::Embedding_options embedding;
+  /// whether the K-means labels are refined by the graph cut (thesis 4.3.3)
+  bool boundary_enhancement = true;
+  /// \f$\mu\f$, \f$\nu\f$ and max-flow backend of the graph cut
+  Refinement::Graph_cut_options graph_cut;
+  /// bound on K-means rounds
+  std::size_t kmeans_iterations = 100;
+};
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief What `segment_k_way()` produced.
+struct K_way_result
+{
+  /// one segment per face, in `[0, number_of_segments)`, each segment one
+  /// connected region, numbered by their smallest face
+  std::vector<int> labels;
+  /// number of segments: `k`, or more on a mesh with more connected
+  /// components than `k`, or fewer if a cluster vanished
+  std::size_t number_of_segments = 0;
+  /// the spectral embedding the clusters were found in
+  Embedding::Spectral_embedding embedding;
+  /// K-means result, before the graph cut
+  Clustering::Kmeans_result clusters;
+  /// seconds spent in each stage, in order
+  std::vector<std::pair<std::string, double>> timings;
+};
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief Segments the faces of a weighted dual graph into `k` parts.
+///
+/// 1. spectral embedding in `k` dimensions: exact for small meshes, Nyström
+///    with `k + 1` farthest-point samples for large ones (`options.embedding`);
+/// 2. K-means in the embedding, seeded with the sample faces (Nyström) or
+///    by max-min (exact);
+/// 3. graph-cut boundary enhancement (optional);
+/// 4. every segment made one connected region (`Refinement::make_segments_connected()`).
+///
+/// \tparam AffinityKernel a model of `AffinityKernel`
+/// \throws Invalid_input if `k` is 0 or larger than the number of faces
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
+                           const AffinityKernel& kernel = AffinityKernel(),
+                           const K_way_options& options = K_way_options(), const Execution& exec = Execution())
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  if(k == 0 || k > n)
+    throw Invalid_input("k-way segmentation: k = " + std::to_string(k) + " but the mesh has " + std::to_string(n) +
+                        " faces (k must be between 1 and the number of faces)");
+  K_way_result r;
+  auto clock = std::chrono::steady_clock::now();
+  auto lap = [&](const std::string& stage) {
+    const auto now = std::chrono::steady_clock::now();
+    r.timings.emplace_back(stage, std::chrono::duration<double>(now - clock).count());
+    clock = now;
+  };
+  if(k == 1 || n < 3)
+  {
+    r.labels.assign(n, 0);
+    r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+    return r;
+  }
+
+  // A mesh too small for the requested Nyström samples falls back to the exact path.
+  const std::size_t dims = std::min(k, n - 1);
+  const bool exact = options.embedding.method == Embedding::Method::exact ||
+                     (options.embedding.method == Embedding::Method::automatic &&
+                      n <= options.embedding.exact_face_limit) ||
+                     (options.embedding.samples > 0 ? options.embedding.samples : dims + 1) > n;
+  r.embedding = exact ? Embedding::exact_spectral_embedding(graph, dims, kernel, exec)
+                      : Embedding::nystrom_spectral_embedding(graph, dims, kernel, options.embedding, exec);
+  lap("embedding");
+  if(r.embedding.coordinates.cols() == 0)
+    throw Error("k-way segmentation: the affinity matrix has no positive eigenvalue after the first");
+
+  exec.report("k-means", 0.);
+  std::vector<std::size_t> seeds;
+  if(!r.embedding.exact)
+    for(std::size_t i = 0; i < k && i < r.embedding.samples.size(); ++i)
+      seeds.push_back(r.embedding.samples[i]);
+  r.clusters = Clustering::kmeans(r.embedding.coordinates, k, seeds, options.kmeans_iterations, exec);
+  r.labels = r.clusters.labels;
+  exec.report("k-means", 1.);
+  lap("k-means");
+
+  if(options.boundary_enhancement)
+  {
+    exec.report("graph cut", 0.);
+    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, r.clusters.centroids, r.labels,
+                                     options.graph_cut);
+    exec.report("graph cut", 1.);
+    lap("graph cut");
+  }
+  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+  lap("connected segments");
+  return r;
+}
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+template <typename NamedParameters>
+K_way_options k_way_options_from(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  K_way_options o = choose_parameter(get_parameter(np, SpectralSeg::internal_np::graph_cut_options), K_way_options());
+  o.embedding.method = choose_parameter(get_parameter(np, SpectralSeg::internal_np::embedding_method), o.embedding.method);
+  o.embedding.samples = choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_samples), o.embedding.samples);
+  o.embedding.sampling = choose_parameter(get_parameter(np, SpectralSeg::internal_np::sampling_method), o.embedding.sampling);
+  o.embedding.seed = static_cast<unsigned int>(
+    choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), o.embedding.seed));
+  o.boundary_enhancement =
+    choose_parameter(get_parameter(np, SpectralSeg::internal_np::boundary_enhancement), o.boundary_enhancement);
+  return o;
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief Segments a triangle mesh into `k` parts by spectral clustering of
+/// the part-aware metric, and returns the number of segments.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///         with triangle faces oriented outward
+/// \tparam SegmentMap a writable property map from faces to an integer type
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh
+/// \param k the number of segments wanted
+/// \param segments receives the segment of each face, in `[0, returned value)`
+/// \param np optional named parameters among:
+///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Part_aware_weight<>()`
+///   - `kernel`: a model of `AffinityKernel`; default `Kernels::Exponential_kernel()`
+///   - `embedding_method`: `Embedding::Method::automatic` (default), `exact` or `nystrom`
+///   - `number_of_samples`: Nyström samples; default `k + 1`
+///   - `sampling_method`: `Embedding::Sampling_method::farthest_point` (default) or `gamma`
+///   - `random_seed`: seed of the sampling's start face (default 0)
+///   - `boundary_enhancement`: graph-cut refinement, default `true`
+///   - `graph_cut_options`: a whole `K_way_options` (the options above override its fields)
+///   - `number_of_threads`, `progress_callback`, `vertex_point_map`,
+///     `vertex_index_map`, `face_index_map`: as for `face_distances()`
+///
+/// The output does not depend on the number of threads.
+/// \throws Invalid_input for `k` = 0 or larger than the number of faces, a
+///         non-triangle face or a non-finite coordinate
+/// \throws Operation_cancelled if the progress callback asks to stop
+template <typename TriangleMesh, typename SegmentMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t k_way_segmentation(const TriangleMesh& tm, std::size_t k, SegmentMap segments,
+                               const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Execution exec = internal::execution_from(np);
+  const Dual_graph graph = make_dual_graph(tm, np);
+  const Weighted_dual_graph weighted(graph, internal::metric_weights(internal::metric_from(np), graph, exec));
+  const auto kernel = choose_parameter(get_parameter(np, SpectralSeg::internal_np::kernel), Kernels::Exponential_kernel());
+  const K_way_result r = segment_k_way(weighted, k, kernel, internal::k_way_options_from(np), exec);
+  const auto fim = CGAL::get_initialized_face_index_map(tm, np);
+  typedef typename boost::property_traits<SegmentMap>::value_type Label;
+  for(auto f : faces(tm))
+    put(segments, f, static_cast<Label>(r.labels[get(fim, f)]));
+  return r.number_of_segments;
+}
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief The spectral embedding of the faces of `tm` in `dimensions`
+/// dimensions, for users who run their own clustering. Rows follow the face
+/// index map. Named parameters as for `k_way_segmentation()`.
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+Embedding::Spectral_embedding spectral_embedding(const TriangleMesh& tm, std::size_t dimensions,
+                                                 const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Execution exec = internal::execution_from(np);
+  const Dual_graph graph = make_dual_graph(tm, np);
+  const Weighted_dual_graph weighted(graph, internal::metric_weights(internal::metric_from(np), graph, exec));
+  const auto kernel = choose_parameter(get_parameter(np, SpectralSeg::internal_np::kernel), Kernels::Exponential_kernel());
+  const K_way_options o = internal::k_way_options_from(np);
+  const std::size_t n = graph.number_of_faces();
+  const bool exact = o.embedding.method == Embedding::Method::exact ||
+                     (o.embedding.method == Embedding::Method::automatic && n <= o.embedding.exact_face_limit);
+  return exact ? Embedding::exact_spectral_embedding(weighted, dimensions, kernel, exec)
+               : Embedding::nystrom_spectral_embedding(weighted, dimensions, kernel, o.embedding, exec);
+}
+
+} // namespace SpectralSeg
+
+#endif

@@ -1,0 +1,186 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// spectralseg segment MESH --k K ...
+#ifndef SPECTRALSEG_TOOLS_COMMAND_SEGMENT_H
+#define SPECTRALSEG_TOOLS_COMMAND_SEGMENT_H
+
+#include "Loaded_mesh.h"
+#include "metric_choice.h"
+
+#include <SpectralSeg/IO/write_colored_mesh.h>
+#include <SpectralSeg/IO/write_face_values.h>
+#include <SpectralSeg/Kernels/Exponential_kernel.h>
+#include <SpectralSeg/Kernels/Gaussian_kernel.h>
+#include <SpectralSeg/k_way_segmentation.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace spectralseg_cli {
+
+struct Segment_options
+{
+  std::string mesh;
+  std::string k = "auto";
+  Metric_options metric;
+  std::string kernel = "exponential";
+  std::string sampling = "auto";
+  std::size_t samples = 0;
+  bool no_graph_cut = false;
+  std::string graph_cut_backend = "default";
+  unsigned threads = 0;
+  unsigned seed = 0;
+  std::string labels, out_mesh, png, json;
+};
+
+inline void add_segment_command(CLI::App& app, Segment_options& o)
+{
+  CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way)");
+  cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
+  cmd->add_option("--k", o.k, "number of segments (a positive integer)")->required();
+  add_metric_options(*cmd, o.metric);
+  cmd->add_option("--kernel", o.kernel, "affinity kernel")
+    ->check(CLI::IsMember({"exponential", "gaussian"}))
+    ->capture_default_str();
+  cmd->add_option("--sampling", o.sampling,
+                  "embedding: exact (full matrix), nystrom (sampled rows) or auto (exact up to 2000 faces)")
+    ->check(CLI::IsMember({"auto", "exact", "nystrom", "gamma"}))
+    ->capture_default_str();
+  cmd->add_option("--samples", o.samples, "Nyström samples (default k + 1)");
+  cmd->add_flag("--no-graph-cut", o.no_graph_cut, "skip the graph-cut boundary enhancement");
+  cmd->add_option("--graph-cut-backend", o.graph_cut_backend,
+                  "max-flow code of the graph cut: maxflow (fastest, GPL), boost-csr or boost-list (LGPL)")
+    ->check(CLI::IsMember({"default", "maxflow", "boost-csr", "boost-list"}))
+    ->capture_default_str();
+  cmd->add_option("--threads", o.threads, "threads (0 = all); the labels do not depend on it");
+  cmd->add_option("--seed", o.seed, "seed of the sampling's start face")->capture_default_str();
+  cmd->add_option("--labels", o.labels, "output: one segment label per face of the file, in file order")->required();
+  cmd->add_option("--mesh", o.out_mesh, "output: the mesh with one colour per segment (.ply or .off)");
+  cmd->add_option("--png", o.png, "output: picture of the segments");
+  cmd->add_option("--json", o.json, "output: report with the stage timings, segments and their areas");
+}
+
+inline int run_segment(const Segment_options& o, Progress_printer& out)
+{
+  using clock = std::chrono::steady_clock;
+  nlohmann::ordered_json report;
+  std::vector<std::pair<std::string, double>> timings;
+  auto t0 = clock::now();
+  auto lap = [&](const std::string& stage) {
+    const auto now = clock::now();
+    timings.emplace_back(stage, std::chrono::duration<double>(now - t0).count());
+    t0 = now;
+  };
+
+  std::size_t k = 0;
+  try
+  {
+    const long long v = std::stoll(o.k);
+    if(v < 1)
+      throw std::invalid_argument("k");
+    k = static_cast<std::size_t>(v);
+  }
+  catch(const std::exception&)
+  {
+    throw SpectralSeg::Invalid_input("--k must be a positive integer (got '" + o.k + "')");
+  }
+
+  const Loaded_mesh m(o.mesh, out);
+  lap("read");
+  const std::size_t n = m.graph.number_of_faces();
+  if(k > n)
+    throw SpectralSeg::Invalid_input("--k " + std::to_string(k) + " is larger than the number of faces (" +
+                                     std::to_string(n) + ")");
+  const SpectralSeg::Execution exec(o.threads, out.callback());
+  const SpectralSeg::Metrics::Any_weight metric = make_metric(o.metric);
+  const std::vector<double> weights = metric(m.graph, exec);
+  const SpectralSeg::Weighted_dual_graph weighted(m.graph, weights);
+  lap("metric");
+
+  SpectralSeg::K_way_options options;
+  options.embedding.method = o.sampling == "exact" ? SpectralSeg::Embedding::Method::exact
+                             : o.sampling == "auto" ? SpectralSeg::Embedding::Method::automatic
+                                                    : SpectralSeg::Embedding::Method::nystrom;
+  if(o.sampling == "gamma")
+    options.embedding.sampling = SpectralSeg::Embedding::Sampling_method::gamma;
+  options.embedding.samples = o.samples;
+  options.embedding.seed = o.seed;
+  options.boundary_enhancement = !o.no_graph_cut;
+  if(o.graph_cut_backend == "maxflow")
+    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::maxflow;
+  else if(o.graph_cut_backend == "boost-csr")
+    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_compressed_sparse_row;
+  else if(o.graph_cut_backend == "boost-list")
+    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_adjacency_list;
+  const SpectralSeg::K_way_result r =
+    o.kernel == "gaussian" ? SpectralSeg::segment_k_way(weighted, k, SpectralSeg::Kernels::Gaussian_kernel(), options, exec)
+                           : SpectralSeg::segment_k_way(weighted, k, SpectralSeg::Kernels::Exponential_kernel(), options, exec);
+  for(const auto& t : r.timings)
+    timings.push_back(t);
+  t0 = clock::now();
+
+  SpectralSeg::IO::write_face_values(o.labels, SpectralSeg::IO::values_in_input_order(m.report, r.labels, -1));
+  std::cout << "segments: " << r.number_of_segments << "\nlabels: " << o.labels << "\n";
+  if(!o.out_mesh.empty())
+  {
+    SpectralSeg::IO::write_colored_mesh(o.out_mesh, m.graph.geometry(), SpectralSeg::Rendering::label_colors(r.labels));
+    std::cout << "mesh: " << o.out_mesh << "\n";
+  }
+  if(!o.png.empty())
+  {
+    SpectralSeg::Rendering::render_face_labels_png(o.png, m.points(), m.triangles(), r.labels);
+    std::cout << "png: " << o.png << "\n";
+  }
+  lap("write");
+
+  if(!o.json.empty())
+  {
+    std::vector<double> areas(r.number_of_segments, 0.);
+    std::vector<std::size_t> counts(r.number_of_segments, 0);
+    for(std::size_t f = 0; f < n; ++f)
+    {
+      areas[std::size_t(r.labels[f])] += m.graph.geometry().areas[f];
+      ++counts[std::size_t(r.labels[f])];
+    }
+    report["mesh"] = o.mesh;
+    report["faces"] = n;
+    report["k"] = k;
+    report["segments"] = r.number_of_segments;
+    report["metric"] = metric.name();
+    report["kernel"] = o.kernel;
+    report["embedding"] = r.embedding.exact ? "exact" : "nystrom";
+    report["samples"] = r.embedding.samples;
+    report["kernel_width"] = r.embedding.kernel_width;
+    report["threads"] = exec.threads();
+    report["graph_cut"] = !o.no_graph_cut;
+    nlohmann::ordered_json segs = nlohmann::json::array();
+    for(std::size_t s = 0; s < r.number_of_segments; ++s)
+      segs.push_back({{"label", s}, {"faces", counts[s]}, {"area", areas[s]}});
+    report["segment_list"] = segs;
+    nlohmann::ordered_json t;
+    double total = 0;
+    for(const auto& st : timings)
+    {
+      t[st.first] = st.second;
+      total += st.second;
+    }
+    t["total"] = total;
+    report["timings_seconds"] = t;
+    std::ofstream js(o.json);
+    if(!js)
+      throw SpectralSeg::Io_error("cannot write '" + o.json + "'");
+    js << report.dump(2) << "\n";
+    std::cout << "json: " << o.json << "\n";
+  }
+  return 0;
+}
+
+} // namespace spectralseg_cli
+
+#endif
