@@ -14,7 +14,8 @@
 //   --out FILE.tsv          per-model rows (default: stdout only)
 //   --alpha A --beta B --gamma C   part-aware coefficients
 //   --no-graph-cut  --sampling exact|nystrom|auto  --kernel exponential|gaussian
-//   --ray-caster aabb|embree  --threads N
+//   --ray-caster aabb|embree  --threads N  --normalization p99|max
+//   --samples-factor F (Nyström samples F*k+1)  --vsi-fraction F
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
@@ -37,6 +38,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <string>
@@ -64,7 +66,12 @@ struct Options
   bool graph_cut = true;
   std::string sampling = "auto", kernel = "exponential", ray_caster = "aabb";
   unsigned threads = 0;
+  std::string normalization = "p99"; // p99 (the library's default) or max (the thesis)
+  std::size_t samples = 0;
+  double samples_factor = 0; // experiment: Nyström samples = factor * k + 1
+  double vsi_fraction = 0.01;
 };
+
 
 std::vector<std::string> split(const std::string& s, char sep)
 {
@@ -146,7 +153,11 @@ std::vector<Row> read_rows(const std::string& path)
 template <typename RayCaster>
 std::vector<double> part_aware(const Options& o, const SpectralSeg::Dual_graph& g, const SpectralSeg::Execution& exec)
 {
-  return SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma)(g, exec);
+  SpectralSeg::Metrics::VSI_options vo;
+  vo.images.sample_fraction = o.vsi_fraction;
+  const auto n = o.normalization == "max" ? SpectralSeg::Metrics::Normalization::maximum()
+                                          : SpectralSeg::Metrics::Normalization::quantile(0.99);
+  return SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma, vo, 0.001, n)(g, exec);
 }
 
 std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, std::size_t k)
@@ -162,6 +173,7 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   const SpectralSeg::Weighted_dual_graph wg(g, w);
   SpectralSeg::K_way_options ko;
   ko.boundary_enhancement = o.graph_cut;
+  ko.embedding.samples = o.samples_factor > 0 ? static_cast<std::size_t>(o.samples_factor * double(k)) + 1 : o.samples;
   ko.embedding.method = o.sampling == "exact"   ? SpectralSeg::Embedding::Method::exact
                         : o.sampling == "nystrom" ? SpectralSeg::Embedding::Method::nystrom
                                                   : SpectralSeg::Embedding::Method::automatic;
@@ -239,6 +251,14 @@ int main(int argc, char** argv)
       o.kernel = next();
     else if(a == "--ray-caster")
       o.ray_caster = next();
+    else if(a == "--normalization")
+      o.normalization = next();
+    else if(a == "--samples-factor")
+      o.samples_factor = std::stod(next());
+    else if(a == "--vsi-fraction")
+      o.vsi_fraction = std::stod(next());
+    else if(a == "--samples")
+      o.samples = std::stoul(next());
     else if(a == "--threads")
       o.threads = static_cast<unsigned>(std::stoul(next()));
     else

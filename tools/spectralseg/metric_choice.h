@@ -26,6 +26,7 @@ struct Metric_options
   std::vector<double> weights{0.01, 0.195, 0.795};
   std::string ray_caster = "aabb";
   double vsi_fraction = 0.01;
+  std::string normalization = "p99";
 };
 
 inline void add_metric_options(CLI::App& cmd, Metric_options& o)
@@ -48,6 +49,11 @@ inline void add_metric_options(CLI::App& cmd, Metric_options& o)
   cmd.add_option("--ray-caster", o.ray_caster, "ray-casting backend of the VSI metric")
     ->check(CLI::IsMember(casters))
     ->capture_default_str();
+  cmd.add_option("--normalization", o.normalization,
+                 "how each metric component is scaled into [0,1] before blending: p99 (99th percentile, "
+                 "clamped; the default) or max (the thesis)")
+    ->check(CLI::IsMember({"p99", "max"}))
+    ->capture_default_str();
   cmd.add_option("--vsi-fraction", o.vsi_fraction,
                  "fraction of the faces whose shape image is ray-cast (the rest are interpolated)")
     ->check(CLI::Range(0.0, 1.0))
@@ -63,7 +69,8 @@ SpectralSeg::Metrics::Any_weight make_vsi_metric(const Metric_options& o)
   if(o.name == "vsi")
     return VSI_weight<RayCaster>(vsi);
   const double gamma = o.weights.size() > 2 ? o.weights[2] : 0.;
-  return Part_aware_weight<RayCaster>(o.weights.at(0), o.weights.at(1), gamma, vsi);
+  return Part_aware_weight<RayCaster>(o.weights.at(0), o.weights.at(1), gamma, vsi, 0.001,
+                                      o.normalization == "max" ? Normalization::maximum() : Normalization::quantile(0.99));
 }
 
 inline SpectralSeg::Metrics::Any_weight make_metric(const Metric_options& o)

@@ -22,9 +22,10 @@ namespace Metrics {
 
 /// \ingroup PkgSpectralSegMetrics
 /// \brief Mixes several dual-edge metrics: each component's weights are
-/// normalised into \f$[0, 1]\f$ by `normalize_weights()`, then summed with
-/// the blend coefficients (\f$\alpha\f$, \f$\beta\f$, \f$\gamma\f$, ... in the
-/// thesis).
+/// normalised into \f$[0, 1]\f$ by `normalize_weights()` (by default by
+/// their maximum, as in the thesis; see `set_normalization()`), then summed
+/// with the blend coefficients (\f$\alpha\f$, \f$\beta\f$, \f$\gamma\f$, ...
+/// in the thesis).
 ///
 /// The coefficients must be finite and non-negative, not all zero; they are
 /// divided by their sum, so that they add up to 1 as in the thesis. A
@@ -60,6 +61,11 @@ public:
 
   /// the coefficients, normalised to add up to 1
   const std::array<double, size>& coefficients() const { return coefficients_; }
+
+  /// how each component is brought into [0, 1] (default: by its maximum)
+  const Normalization& normalization() const { return normalization_; }
+  /// sets the normalisation of the components
+  void set_normalization(const Normalization& n) { normalization_ = n; }
   /// the components
   const std::tuple<Components...>& components() const { return components_; }
 
@@ -84,18 +90,18 @@ private:
   void accumulate(const Dual_graph& graph, const Execution& exec, std::vector<double>& w,
                   std::index_sequence<I...>) const
   {
-    (add_component(std::get<I>(components_), coefficients_[I], graph, exec, w), ...);
+    (add_component(std::get<I>(components_), coefficients_[I], normalization_, graph, exec, w), ...);
   }
 
   template <typename C>
-  static void add_component(const C& c, double coefficient, const Dual_graph& graph,
-                            const Execution& exec, std::vector<double>& w)
+  static void add_component(const C& c, double coefficient, const Normalization& normalization,
+                            const Dual_graph& graph, const Execution& exec, std::vector<double>& w)
   {
     if(coefficient == 0.)
       return;
     std::vector<double> cw = c(graph, exec);
     check_weights(graph, cw, c.name());
-    normalize_weights(cw);
+    normalize_weights(cw, normalization);
     for(std::size_t e = 0; e < w.size(); ++e)
       w[e] += coefficient * cw[e];
   }
@@ -111,6 +117,7 @@ private:
 
   std::array<double, size> coefficients_;
   std::tuple<Components...> components_;
+  Normalization normalization_ = Normalization::maximum();
 };
 
 /// \ingroup PkgSpectralSegMetrics

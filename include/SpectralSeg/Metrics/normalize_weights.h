@@ -33,6 +33,32 @@ inline void check_weights(const Dual_graph& graph, const std::vector<double>& we
 }
 
 /// \ingroup PkgSpectralSegMetrics
+/// \brief How a blend brings each component's weights into \f$[0, 1]\f$.
+///
+/// - `maximum()`: divide by the largest weight (the thesis, 3.5);
+/// - `quantile(q)`: divide by the `q`-quantile of the weights and clamp at 1,
+///   so that a few extreme edges (thin shells such as ears, where reference
+///   points of adjacent faces land on different sides) do not squeeze all
+///   other weights towards 0. The part-aware metric uses `quantile(0.99)`:
+///   on the 38 psb-dev models it lowers the k-way Rand-index error from
+///   0.155 to 0.132 (see the user manual).
+struct Normalization
+{
+  /// the quantile in (0, 1]; 1 means the maximum
+  double quantile_level = 1.;
+
+  /// divide by the maximum
+  static Normalization maximum() { return Normalization{1.}; }
+  /// divide by the `q`-quantile, clamp at 1
+  static Normalization quantile(double q)
+  {
+    if(!(q > 0. && q <= 1.))
+      throw Invalid_input("Normalization::quantile: the level must be in (0, 1]");
+    return Normalization{q};
+  }
+};
+
+/// \ingroup PkgSpectralSegMetrics
 /// \brief Scales non-negative weights linearly into \f$[0, 1]\f$ by dividing
 /// them by their maximum (all-zero weights stay zero).
 ///
@@ -45,6 +71,32 @@ inline void normalize_weights(std::vector<double>& weights)
   if(m > 0)
     for(double& w : weights)
       w /= m;
+}
+
+/// \ingroup PkgSpectralSegMetrics
+/// \brief Scales non-negative weights into \f$[0, 1]\f$ as `normalization`
+/// says. A zero quantile falls back to the maximum.
+inline void normalize_weights(std::vector<double>& weights, const Normalization& normalization)
+{
+  if(weights.empty())
+    return;
+  if(normalization.quantile_level >= 1.)
+  {
+    normalize_weights(weights);
+    return;
+  }
+  std::vector<double> sorted = weights;
+  const std::size_t i = std::min(sorted.size() - 1,
+                                 static_cast<std::size_t>(normalization.quantile_level * double(sorted.size())));
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(i), sorted.end());
+  const double scale = sorted[i];
+  if(!(scale > 0))
+  {
+    normalize_weights(weights);
+    return;
+  }
+  for(double& w : weights)
+    w = std::min(1., w / scale);
 }
 
 } // namespace Metrics
