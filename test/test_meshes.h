@@ -20,6 +20,7 @@ struct Soup
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::vector<std::size_t>> faces;
+  std::vector<int> face_part; // optional: the known part of each face
 };
 
 // A strip of `squares` unit squares along x, each split by its diagonal
@@ -146,7 +147,7 @@ inline Soup welded(const Soup& in)
 // The closed surface of a union of unit voxels (given as integer cells),
 // each exposed voxel side split into s x s squares of two triangles,
 // outward oriented. Cells must not touch along an edge or a vertex only.
-inline Soup voxel_union(const std::vector<std::array<int, 3>>& cells, int s)
+inline Soup voxel_union(const std::vector<std::array<int, 3>>& cells, int s, const std::vector<int>& cell_part = {})
 {
   std::set<std::array<int, 3>> filled(cells.begin(), cells.end());
   std::map<std::array<long, 3>, std::size_t> vertex;
@@ -178,6 +179,12 @@ inline Soup voxel_union(const std::vector<std::array<int, 3>>& cells, int s)
             };
             const std::size_t a = corner(0, 0), b = corner(1, 0), cc = corner(1, 1), d = corner(0, 1);
             // (u, v, axis) is right-handed: u x v = +axis
+            if(!cell_part.empty())
+            {
+              const int part = cell_part[std::size_t(&c - cells.data())];
+              out.face_part.push_back(part);
+              out.face_part.push_back(part);
+            }
             if(side)
             {
               out.faces.push_back({a, b, cc});
@@ -207,6 +214,35 @@ inline Soup t_shape(int s)
       for(int z = 0; z < 6; ++z)
         cells.push_back({x, y, z});
   return voxel_union(cells, s);
+}
+
+// A body (a 4 x 4 x 4 block of cells, part 0) with four limbs of 6 x 2 x 2
+// cells along +x, -x, +y and -y (parts 1 to 4): a shape with five known parts.
+inline Soup star(int s)
+{
+  std::vector<std::array<int, 3>> cells;
+  std::vector<int> part;
+  for(int x = 0; x < 4; ++x)
+    for(int y = 0; y < 4; ++y)
+      for(int z = 0; z < 4; ++z)
+      {
+        cells.push_back({x, y, z});
+        part.push_back(0);
+      }
+  for(int t = 0; t < 6; ++t)
+    for(int a = 1; a < 3; ++a)
+      for(int z = 1; z < 3; ++z)
+      {
+        cells.push_back({4 + t, a, z});
+        part.push_back(1);
+        cells.push_back({-1 - t, a, z});
+        part.push_back(2);
+        cells.push_back({a, 4 + t, z});
+        part.push_back(3);
+        cells.push_back({a, -1 - t, z});
+        part.push_back(4);
+      }
+  return voxel_union(cells, s, part);
 }
 
 // A UV sphere of radius r centred at the origin.
