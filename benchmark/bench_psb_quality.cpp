@@ -16,6 +16,7 @@
 //   --no-graph-cut  --sampling exact|nystrom|auto  --kernel exponential|gaussian
 //   --ray-caster aabb|embree  --threads N  --normalization p99|max
 //   --samples-factor F (Nyström samples F*k+1)  --vsi-fraction F
+//   --auto-k MAX   choose k from the spectrum (k in [2, MAX]) instead of k_by_model
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
@@ -70,6 +71,7 @@ struct Options
   std::size_t samples = 0;
   double samples_factor = 0; // experiment: Nyström samples = factor * k + 1
   double vsi_fraction = 0.01;
+  std::size_t auto_k = 0; // > 0: choose k from the spectrum, at most this many
 };
 
 
@@ -177,6 +179,8 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   ko.embedding.method = o.sampling == "exact"   ? SpectralSeg::Embedding::Method::exact
                         : o.sampling == "nystrom" ? SpectralSeg::Embedding::Method::nystrom
                                                   : SpectralSeg::Embedding::Method::automatic;
+  if(o.auto_k > 0)
+    return SpectralSeg::segment_k_way_automatic(wg, o.auto_k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec).labels;
   const auto r = o.kernel == "gaussian" ? SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Gaussian_kernel(), ko, exec)
                                         : SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec);
   return r.labels;
@@ -253,6 +257,8 @@ int main(int argc, char** argv)
       o.ray_caster = next();
     else if(a == "--normalization")
       o.normalization = next();
+    else if(a == "--auto-k")
+      o.auto_k = std::stoul(next());
     else if(a == "--samples-factor")
       o.samples_factor = std::stod(next());
     else if(a == "--vsi-fraction")
@@ -303,19 +309,20 @@ int main(int argc, char** argv)
     {
       const auto t0 = std::chrono::steady_clock::now();
       const std::vector<int> labels = method == "sdf" ? run_sdf(mesh) : run_kway(o, g, k);
+      const std::string method_name = method == "kway" && o.auto_k > 0 ? "kway-auto" : method;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       double ri = 0;
       for(const auto& h : humans)
         ri += SpectralSeg::Evaluation::rand_index_error(labels, h);
       ri /= double(humans.size());
-      Row r{id, category, method, g.number_of_faces(), k, 0, ri, seconds};
+      Row r{id, category, method_name, g.number_of_faces(), k, 0, ri, seconds};
       r.segments = std::set<int>(labels.begin(), labels.end()).size();
       rows.push_back(r);
-      std::printf("%s\t%s\t%s\t%zu\t%zu\t%zu\t%.4f\t%.2f\n", id.c_str(), category.c_str(), method.c_str(), r.faces, k,
+      std::printf("%s\t%s\t%s\t%zu\t%zu\t%zu\t%.4f\t%.2f\n", id.c_str(), category.c_str(), method_name.c_str(), r.faces, k,
                   r.segments, ri, seconds);
       std::fflush(stdout);
       if(out)
-        out << id << '\t' << category << '\t' << method << '\t' << r.faces << '\t' << k << '\t' << r.segments << '\t'
+        out << id << '\t' << category << '\t' << method_name << '\t' << r.faces << '\t' << k << '\t' << r.segments << '\t'
             << ri << '\t' << seconds << '\n';
     }
   }

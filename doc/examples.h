@@ -5,13 +5,21 @@
 // "Examples" pages. No code includes this file.
 
 /// \example distance_field.cpp
-/// Distances from one face of a `CGAL::Surface_mesh` under several metrics,
-/// computed by `SpectralSeg::face_distances()` into face property maps, and
-/// the farthest face under each. Usage:
-/// `distance_field [mesh.off] [source_face]`.
+/// Distances from one face of a `CGAL::Surface_mesh` under the geodesic, the
+/// angular and the default part-aware metric, computed by
+/// `SpectralSeg::face_distances()` into face property maps, and the farthest
+/// face under each. Usage: `distance_field [mesh.off] [source_face]`.
 
 /// \example custom_metric.cpp
 /// Two ways to write a metric: a function of one dual edge wrapped by
 /// `SpectralSeg::Metrics::make_per_edge_weight()`, and a class modelling
 /// `DualEdgeWeight`; both are blended with the angular metric and used on a
 /// `CGAL::Polyhedron_3`. Usage: `custom_metric [mesh.off]`.
+
+/// \example part_aware_sampling.cpp
+/// Max-min (farthest-point) sampling of faces under the part-aware metric
+/// with `SpectralSeg::Sampling::farthest_point_samples()`, on a
+/// `SpectralSeg::Weighted_dual_graph` built once; every face is then coloured
+/// by its nearest sample and the picture is written as a PNG file with
+/// `SpectralSeg::Rendering::render_face_labels_png()`. Usage:
+/// `part_aware_sampling [mesh.off] [samples=8] [out.png]`.

@@ -38,16 +38,22 @@
 /// distance between faces.
 ///
 /// All metric policies live in the namespace `SpectralSeg::Metrics`:
+/// - `Part_aware_weight`: the library's default, a blend of the geodesic,
+///   angular and VSI weights with the thesis's coefficients (0.01, 0.195,
+///   0.795), each component normalised by its 99th percentile;
+///   `Part_aware_weight<>::thesis()` normalises by the maximum instead;
 /// - `Geodesic_weight`: the centroid-to-centroid path length across the
 ///   shared edge (approximate geodesic distance);
 /// - `Angular_weight`: the normal angle across concave folds, a small
 ///   constant across convex ones;
+/// - `VSI_weight`: the difference of the volumetric shape images of the two
+///   faces (the stages are in \ref PkgSpectralSegVSI);
 /// - `Blend`: a convex combination of normalised metrics;
 /// - `Per_edge_weight`: any function of one dual edge;
 /// - `Any_weight`: a metric chosen at run time.
 ///
-/// `check_weights()` and `normalize_weights()` are the helpers the library
-/// uses to validate and normalise weight vectors.
+/// `check_weights()`, `normalize_weights()` and `Normalization` are the
+/// helpers the library uses to validate and normalise weight vectors.
 ///
 /// Headers: `<SpectralSeg/Metrics/*.h>`.
 
@@ -66,12 +72,18 @@
 
 /// \defgroup PkgSpectralSegIO Reading meshes, writing per-face values
 /// \ingroup PkgSpectralSegRef
-/// \brief Reading OFF, OBJ, PLY and STL files with checks and repairs, and
-/// writing per-face results in the order of the faces of the file.
+/// \brief Reading OFF, OBJ, PLY and STL files with checks and repairs,
+/// writing per-face results in the order of the faces of the file, and
+/// writing meshes with one colour per face.
+///
+/// Label files (one integer per face, as in the Princeton Segmentation
+/// Benchmark) are read and written by `Evaluation::read_labels()` and
+/// `Evaluation::write_labels()` (\ref PkgSpectralSegEvaluation).
 ///
 /// Headers: `<SpectralSeg/IO/read_mesh_file.h>`,
 /// `<SpectralSeg/IO/Mesh_file_report.h>`,
-/// `<SpectralSeg/IO/write_face_values.h>`.
+/// `<SpectralSeg/IO/write_face_values.h>`,
+/// `<SpectralSeg/IO/write_colored_mesh.h>`.
 
 /// \defgroup PkgSpectralSegNamedParameters Named parameters
 /// \ingroup PkgSpectralSegRef
@@ -96,28 +108,64 @@
 /// The parameters SpectralSeg adds:
 ///
 /// <table>
-/// <tr><th>Parameter</th><th>Type</th><th>Meaning</th><th>Default</th></tr>
+/// <tr><th>Parameter</th><th>Type</th><th>Meaning</th><th>Default</th><th>Read by</th></tr>
 /// <tr><td>`metric`</td><td>a model of `DualEdgeWeight`</td>
 ///     <td>the weight of each dual edge</td>
-///     <td>`Metrics::Geodesic_weight()`</td></tr>
+///     <td>`Metrics::Part_aware_weight<>()`</td>
+///     <td>`face_distances()`, `k_way_segmentation()`, `spectral_embedding()`</td></tr>
 /// <tr><td>`nearest_source_map`</td>
 ///     <td>a writable property map, key: face descriptor, value: `std::size_t`</td>
 ///     <td>receives, for each face, the position in the source range of the
 ///         nearest source, or `Nearest_source_distances::unreachable`</td>
-///     <td>not written</td></tr>
+///     <td>not written</td>
+///     <td>`face_distances()`</td></tr>
 /// <tr><td>`number_of_threads`</td><td>`unsigned int`</td>
 ///     <td>threads used by parallel stages; `0` means all hardware threads
 ///         (results do not depend on it)</td>
-///     <td>`0`</td></tr>
+///     <td>`0`</td>
+///     <td>all</td></tr>
 /// <tr><td>`progress_callback`</td><td>`Progress_callback`</td>
 ///     <td>called with the stage name and the fraction done; returning
 ///         `false` cancels the computation (`Operation_cancelled`)</td>
-///     <td>none</td></tr>
+///     <td>none</td>
+///     <td>all</td></tr>
+/// <tr><td>`kernel`</td><td>a model of `AffinityKernel`</td>
+///     <td>turns distances into affinities</td>
+///     <td>`Kernels::Exponential_kernel()`</td>
+///     <td>`k_way_segmentation()`, `spectral_embedding()`</td></tr>
+/// <tr><td>`embedding_method`</td><td>`Embedding::Method`</td>
+///     <td>`automatic` (exact up to `Embedding_options::exact_face_limit`
+///         = 2,000 faces, Nyström above), `exact` or `nystrom`</td>
+///     <td>`Embedding::Method::automatic`</td>
+///     <td>`k_way_segmentation()`, `spectral_embedding()`</td></tr>
+/// <tr><td>`number_of_samples`</td><td>`std::size_t`</td>
+///     <td>number of Nyström samples; `0` means the number of dimensions
+///         plus one</td>
+///     <td>`0` (that is, \f$k + 1\f$)</td>
+///     <td>`k_way_segmentation()`, `spectral_embedding()`</td></tr>
+/// <tr><td>`sampling_method`</td><td>`Embedding::Sampling_method`</td>
+///     <td>how the Nyström samples are chosen: `farthest_point` or
+///         `gamma`</td>
+///     <td>`Embedding::Sampling_method::farthest_point`</td>
+///     <td>`k_way_segmentation()`, `spectral_embedding()`</td></tr>
+/// <tr><td>`boundary_enhancement`</td><td>`bool`</td>
+///     <td>whether the K-means labels are refined by the graph cut</td>
+///     <td>`true`</td>
+///     <td>`k_way_segmentation()`</td></tr>
+/// <tr><td>`graph_cut_options`</td><td>`K_way_options` (the whole set of
+///         k-way options, not only `Refinement::Graph_cut_options`)</td>
+///     <td>starting values of all k-way options; the parameters above
+///         override the fields they name</td>
+///     <td>`K_way_options()`</td>
+///     <td>`k_way_segmentation()`, `spectral_embedding()`</td></tr>
 /// </table>
 ///
 /// The CGAL parameters read by SpectralSeg's functions are
 /// `vertex_point_map`, `vertex_index_map` and `face_index_map` (see
-/// `extract_mesh_geometry()`).
+/// `extract_mesh_geometry()`), and, for `k_way_segmentation()` and
+/// `spectral_embedding()`, `random_seed` (an `unsigned int`, default 0: the
+/// seed of the random start face of the farthest-point sampling and of the
+/// candidates of Gamma-sampling).
 ///
 /// Header: `<SpectralSeg/named_parameters.h>`.
 
@@ -134,29 +182,155 @@
 /// `<SpectralSeg/Rendering/Software_rasterizer.h>`,
 /// `<SpectralSeg/Rendering/write_png.h>`.
 
-/// \defgroup PkgSpectralSegRayCasting Ray casting (in development)
+/// \defgroup PkgSpectralSegRayCasting Ray casting
 /// \ingroup PkgSpectralSegRef
-/// \brief Backends that cast rays against a mesh, for the metrics that look
-/// at the volume enclosed by the surface.
+/// \brief Backends that find the first triangle hit by a ray, for the VSI
+/// metric, which looks at the volume enclosed by the surface.
 ///
-/// Work in progress: see the Roadmap section of the user manual.
+/// Both are models of the `RayCaster` concept and live in the namespace
+/// `SpectralSeg::Ray_casting`:
+/// - `AABB_ray_caster`: a CGAL AABB tree in double precision, always
+///   available, the default;
+/// - `Embree_ray_caster`: Intel Embree 3 in single precision, much faster;
+///   available when `SPECTRALSEG_HAS_EMBREE` is defined (the CMake option
+///   `SPECTRALSEG_WITH_EMBREE`).
+///
+/// Headers: `<SpectralSeg/Ray_casting/AABB_ray_caster.h>`,
+/// `<SpectralSeg/Ray_casting/Embree_ray_caster.h>`.
 
-/// \defgroup PkgSpectralSegVSI VSI metric (in development)
+/// \defgroup PkgSpectralSegVSI VSI metric
+/// \ingroup PkgSpectralSegMetrics
+/// \brief The stages of the volumetric shape image metric: a reference
+/// point inside the shape for every face, the shape image seen from it, and
+/// the difference of the images across each dual edge.
+///
+/// `Metrics::VSI_weight` runs them all; `Metrics::compute_vsi()` does the
+/// same and also returns the reference points and the images, for
+/// inspection. The parameters are gathered in `Metrics::VSI_options`.
+///
+/// Headers: `<SpectralSeg/Metrics/VSI_weight.h>`,
+/// `<SpectralSeg/Metrics/VSI/Reference_points.h>`,
+/// `<SpectralSeg/Metrics/VSI/Shape_images.h>`,
+/// `<SpectralSeg/Metrics/VSI/ray_directions.h>`.
+
+/// \defgroup PkgSpectralSegSampling Sampling faces
 /// \ingroup PkgSpectralSegRef
-/// \brief The stages of the volumetric shape image metric.
+/// \brief Max-min (farthest-point) sampling of faces under any dual-graph
+/// metric: the Nyström samples of the k-way segmentation, and a way to see
+/// how a metric separates the parts of a mesh.
 ///
-/// Work in progress: see the Roadmap section of the user manual.
+/// Header: `<SpectralSeg/Sampling/farthest_point_samples.h>`.
 
-/// \brief Everything in SpectralSeg: the dual graph, metrics, distances, and
-/// (in sub-namespaces) metric policies, file input/output and rendering.
+/// \defgroup PkgSpectralSegKWay k-way segmentation
+/// \ingroup PkgSpectralSegRef
+/// \brief Segmentation of a mesh into a given number of parts by spectral
+/// clustering.
+///
+/// `k_way_segmentation()` is the one-call entry point on a mesh;
+/// `segment_k_way()` works on a `Weighted_dual_graph` and returns every
+/// intermediate result (`K_way_result`); `spectral_embedding()` stops after
+/// the embedding, for users who cluster the faces themselves. The stages are
+/// documented in \ref PkgSpectralSegKernels, \ref PkgSpectralSegEmbedding,
+/// \ref PkgSpectralSegClustering and \ref PkgSpectralSegRefinement.
+///
+/// Header: `<SpectralSeg/k_way_segmentation.h>`.
+
+/// \defgroup PkgSpectralSegKernels Affinity kernels
+/// \ingroup PkgSpectralSegKWay
+/// \brief Models of the `AffinityKernel` concept, which turn distances
+/// between faces into affinities: `Kernels::Exponential_kernel` (the
+/// default) and `Kernels::Gaussian_kernel`.
+///
+/// Headers: `<SpectralSeg/Kernels/Exponential_kernel.h>`,
+/// `<SpectralSeg/Kernels/Gaussian_kernel.h>`.
+
+/// \defgroup PkgSpectralSegEmbedding Spectral embedding
+/// \ingroup PkgSpectralSegKWay
+/// \brief The coordinates of every face in the space spanned by the leading
+/// eigenvectors of the affinity matrix: exactly from all pairwise distances
+/// (`Embedding::exact_spectral_embedding()`), or from a few sampled rows by
+/// the Nyström method (`Embedding::nystrom_spectral_embedding()`), with the
+/// sampling quality measure `Embedding::nystrom_gamma()`.
+///
+/// Headers: `<SpectralSeg/Embedding/Spectral_embedding.h>`,
+/// `<SpectralSeg/Embedding/exact_spectral_embedding.h>`,
+/// `<SpectralSeg/Embedding/nystrom_spectral_embedding.h>`.
+
+/// \defgroup PkgSpectralSegClustering Clustering
+/// \ingroup PkgSpectralSegKWay
+/// \brief Lloyd's K-means on the rows of the embedding, with max-min
+/// seeding (`Clustering::kmeans()`, `Clustering::max_min_seeds()`).
+///
+/// Header: `<SpectralSeg/Clustering/Kmeans.h>`.
+
+/// \defgroup PkgSpectralSegRefinement Refinement of segments
+/// \ingroup PkgSpectralSegKWay
+/// \brief Boundary enhancement by an alpha-expansion graph cut
+/// (`Refinement::graph_cut_boundaries()`), and the last step of every
+/// segmentation: one connected region per segment
+/// (`Refinement::make_segments_connected()`).
+///
+/// Headers: `<SpectralSeg/Refinement/graph_cut_boundaries.h>`,
+/// `<SpectralSeg/Refinement/connected_segments.h>`.
+
+/// \defgroup PkgSpectralSegEvaluation Evaluation
+/// \ingroup PkgSpectralSegRef
+/// \brief The scores of the Princeton Segmentation Benchmark (Rand index
+/// error, global and local consistency errors, Hamming distance, cut
+/// discrepancy) of a segmentation against ground-truth segmentations, and
+/// reading and writing label files.
+///
+/// Everything lives in the namespace `SpectralSeg::Evaluation`.
+///
+/// Header: `<SpectralSeg/evaluation.h>`.
+
+/// \brief Everything in SpectralSeg: the dual graph, distances and the
+/// k-way segmentation, and (in sub-namespaces) metric policies, ray casting,
+/// the stages of the segmentation, evaluation, file input/output and
+/// rendering.
 namespace SpectralSeg {
 
 /// \ingroup PkgSpectralSegMetrics
 /// \brief Metric policies: models of `DualEdgeWeight`, and weight helpers.
-namespace Metrics {}
+namespace Metrics {
+
+/// \ingroup PkgSpectralSegVSI
+/// \brief The stages of the volumetric shape image metric.
+namespace VSI {}
+
+} // namespace Metrics
+
+/// \ingroup PkgSpectralSegRayCasting
+/// \brief Ray-casting backends: models of `RayCaster`.
+namespace Ray_casting {}
+
+/// \ingroup PkgSpectralSegSampling
+/// \brief Choosing faces spread over a mesh.
+namespace Sampling {}
+
+/// \ingroup PkgSpectralSegKernels
+/// \brief Affinity kernels: models of `AffinityKernel`.
+namespace Kernels {}
+
+/// \ingroup PkgSpectralSegEmbedding
+/// \brief Spectral embeddings of the faces, exact or by the Nyström method.
+namespace Embedding {}
+
+/// \ingroup PkgSpectralSegClustering
+/// \brief K-means in the spectral embedding.
+namespace Clustering {}
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief Refinement of segmentations: graph-cut boundaries, connected segments.
+namespace Refinement {}
+
+/// \ingroup PkgSpectralSegEvaluation
+/// \brief Scores of segmentations against ground truths, label files.
+namespace Evaluation {}
 
 /// \ingroup PkgSpectralSegIO
-/// \brief Reading mesh files with repairs, writing per-face values.
+/// \brief Reading mesh files with repairs, writing per-face values and
+/// coloured meshes.
 namespace IO {}
 
 /// \ingroup PkgSpectralSegRendering

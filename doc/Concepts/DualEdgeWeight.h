@@ -44,6 +44,8 @@
 /// - `SpectralSeg::Metrics::Geodesic_weight`
 /// - `SpectralSeg::Metrics::Angular_weight`
 /// - `SpectralSeg::Metrics::Blend`
+/// - `SpectralSeg::Metrics::VSI_weight`
+/// - `SpectralSeg::Metrics::Part_aware_weight` (the library's default metric)
 /// - `SpectralSeg::Metrics::Per_edge_weight`
 /// - `SpectralSeg::Metrics::Any_weight`
 class DualEdgeWeight

@@ -54,6 +54,54 @@ struct K_way_result
   std::vector<std::pair<std::string, double>> timings;
 };
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The embedding of `segment_k_way()`: exact for small meshes (or when asked,
+// or when the mesh is too small for the Nyström samples), else Nyström.
+template <typename AffinityKernel>
+Embedding::Spectral_embedding embed(const Weighted_dual_graph& graph, std::size_t dims, const AffinityKernel& kernel,
+                                    const Embedding::Embedding_options& options, const Execution& exec)
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  const bool exact = options.method == Embedding::Method::exact ||
+                     (options.method == Embedding::Method::automatic && n <= options.exact_face_limit) ||
+                     (options.samples > 0 ? options.samples : dims + 1) > n;
+  return exact ? Embedding::exact_spectral_embedding(graph, dims, kernel, exec)
+               : Embedding::nystrom_spectral_embedding(graph, dims, kernel, options, exec);
+}
+
+// K-means, graph cut and connected segments on r.embedding.
+template <typename Lap>
+void cluster(const Weighted_dual_graph& graph, std::size_t k, const K_way_options& options, K_way_result& r,
+             Lap& lap, const Execution& exec)
+{
+  if(r.embedding.coordinates.cols() == 0)
+    throw Error("k-way segmentation: the affinity matrix has no positive eigenvalue after the first");
+  exec.report("k-means", 0.);
+  std::vector<std::size_t> seeds;
+  if(!r.embedding.exact)
+    for(std::size_t i = 0; i < k && i < r.embedding.samples.size(); ++i)
+      seeds.push_back(r.embedding.samples[i]);
+  r.clusters = Clustering::kmeans(r.embedding.coordinates, k, seeds, options.kmeans_iterations, exec);
+  r.labels = r.clusters.labels;
+  exec.report("k-means", 1.);
+  lap("k-means");
+  if(options.boundary_enhancement)
+  {
+    exec.report("graph cut", 0.);
+    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, r.clusters.centroids, r.labels,
+                                     options.graph_cut);
+    exec.report("graph cut", 1.);
+    lap("graph cut");
+  }
+  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+  lap("connected segments");
+}
+
+} // namespace internal
+/// \endcond
+
 /// \ingroup PkgSpectralSegKWay
 /// \brief Segments the faces of a weighted dual graph into `k` parts.
 ///
@@ -89,38 +137,73 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     return r;
   }
 
-  // A mesh too small for the requested Nyström samples falls back to the exact path.
   const std::size_t dims = std::min(k, n - 1);
-  const bool exact = options.embedding.method == Embedding::Method::exact ||
-                     (options.embedding.method == Embedding::Method::automatic &&
-                      n <= options.embedding.exact_face_limit) ||
-                     (options.embedding.samples > 0 ? options.embedding.samples : dims + 1) > n;
-  r.embedding = exact ? Embedding::exact_spectral_embedding(graph, dims, kernel, exec)
-                      : Embedding::nystrom_spectral_embedding(graph, dims, kernel, options.embedding, exec);
+  r.embedding = internal::embed(graph, dims, kernel, options.embedding, exec);
   lap("embedding");
-  if(r.embedding.coordinates.cols() == 0)
-    throw Error("k-way segmentation: the affinity matrix has no positive eigenvalue after the first");
+  internal::cluster(graph, k, options, r, lap, exec);
+  return r;
+}
 
-  exec.report("k-means", 0.);
-  std::vector<std::size_t> seeds;
-  if(!r.embedding.exact)
-    for(std::size_t i = 0; i < k && i < r.embedding.samples.size(); ++i)
-      seeds.push_back(r.embedding.samples[i]);
-  r.clusters = Clustering::kmeans(r.embedding.coordinates, k, seeds, options.kmeans_iterations, exec);
-  r.labels = r.clusters.labels;
-  exec.report("k-means", 1.);
-  lap("k-means");
-
-  if(options.boundary_enhancement)
+/// \ingroup PkgSpectralSegKWay
+/// \brief Chooses a number of segments from the spectrum of the affinity
+/// matrix (the rule behind `--k auto`).
+///
+/// With \f$\lambda_1 \ge \lambda_2 \ge \dots\f$ the leading eigenvalues
+/// of the affinity matrix (\f$\lambda_1\f$ is the one dropped for
+/// centring), an affinity made of \f$c\f$ well-separated blocks has \f$c\f$
+/// large eigenvalues followed by a drop. The rule returns the \f$k \in [2,
+/// k_{max}]\f$ with the largest relative gap \f$(\lambda_k -
+/// \lambda_{k+1}) / \lambda_k\f$ (ties to the smaller \f$k\f$).
+inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding& e, std::size_t max_k)
+{
+  std::vector<double> lambda{e.first_eigenvalue};
+  for(Eigen::Index i = 0; i < e.eigenvalues.size(); ++i)
+    lambda.push_back(e.eigenvalues(i));
+  std::size_t best = 2;
+  double best_gap = -1.;
+  for(std::size_t k = 2; k <= max_k && k < lambda.size(); ++k)
   {
-    exec.report("graph cut", 0.);
-    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, r.clusters.centroids, r.labels,
-                                     options.graph_cut);
-    exec.report("graph cut", 1.);
-    lap("graph cut");
+    const double gap = lambda[k - 1] > 0 ? (lambda[k - 1] - lambda[k]) / lambda[k - 1] : 0.;
+    if(gap > best_gap)
+    {
+      best_gap = gap;
+      best = k;
+    }
   }
-  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
-  lap("connected segments");
+  return std::min(best, std::max<std::size_t>(lambda.size() - 1, 1));
+}
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief `segment_k_way()` with the number of segments chosen from the
+/// spectrum (`choose_number_of_segments()`), between 2 and `max_k`.
+///
+/// The embedding is computed once in `max_k` dimensions (Nyström: `max_k + 1`
+/// samples); K-means and the graph cut then run on its first \f$k\f$ columns.
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph, std::size_t max_k = 15,
+                                     const AffinityKernel& kernel = AffinityKernel(),
+                                     const K_way_options& options = K_way_options(), const Execution& exec = Execution())
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  if(max_k < 2)
+    throw Invalid_input("automatic k-way segmentation: the largest k must be at least 2");
+  if(n < 3)
+    return segment_k_way(graph, 1, kernel, options, exec);
+  K_way_result r;
+  auto clock = std::chrono::steady_clock::now();
+  auto lap = [&](const std::string& stage) {
+    const auto now = std::chrono::steady_clock::now();
+    r.timings.emplace_back(stage, std::chrono::duration<double>(now - clock).count());
+    clock = now;
+  };
+  const std::size_t dims = std::min(max_k, n - 1);
+  r.embedding = internal::embed(graph, dims, kernel, options.embedding, exec);
+  lap("embedding");
+  const std::size_t k = std::min(choose_number_of_segments(r.embedding, dims), std::size_t(r.embedding.coordinates.cols()));
+  r.embedding.coordinates.conservativeResize(Eigen::NoChange, static_cast<Eigen::Index>(std::max<std::size_t>(k, 1)));
+  r.embedding.eigenvalues.conservativeResize(static_cast<Eigen::Index>(std::max<std::size_t>(k, 1)));
+  lap("choose k");
+  internal::cluster(graph, std::max<std::size_t>(k, 1), options, r, lap, exec);
   return r;
 }
 
@@ -207,12 +290,7 @@ Embedding::Spectral_embedding spectral_embedding(const TriangleMesh& tm, std::si
   const Dual_graph graph = make_dual_graph(tm, np);
   const Weighted_dual_graph weighted(graph, internal::metric_weights(internal::metric_from(np), graph, exec));
   const auto kernel = choose_parameter(get_parameter(np, SpectralSeg::internal_np::kernel), Kernels::Exponential_kernel());
-  const K_way_options o = internal::k_way_options_from(np);
-  const std::size_t n = graph.number_of_faces();
-  const bool exact = o.embedding.method == Embedding::Method::exact ||
-                     (o.embedding.method == Embedding::Method::automatic && n <= o.embedding.exact_face_limit);
-  return exact ? Embedding::exact_spectral_embedding(weighted, dimensions, kernel, exec)
-               : Embedding::nystrom_spectral_embedding(weighted, dimensions, kernel, o.embedding, exec);
+  return internal::embed(weighted, dimensions, kernel, internal::k_way_options_from(np).embedding, exec);
 }
 
 } // namespace SpectralSeg

@@ -27,7 +27,8 @@ namespace spectralseg_cli {
 struct Segment_options
 {
   std::string mesh;
-  std::string k = "auto";
+  std::string k;
+  std::size_t max_k = 15;
   Metric_options metric;
   std::string kernel = "exponential";
   std::string sampling = "auto";
@@ -43,7 +44,11 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
 {
   CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way)");
   cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
-  cmd->add_option("--k", o.k, "number of segments (a positive integer)")->required();
+  cmd->add_option("--k", o.k,
+                  "number of segments: a positive integer, or 'auto' to choose it (2 to --max-k) from the largest "
+                  "relative gap in the spectrum of the affinity matrix")
+    ->required();
+  cmd->add_option("--max-k", o.max_k, "largest k considered by --k auto")->capture_default_str();
   add_metric_options(*cmd, o.metric);
   cmd->add_option("--kernel", o.kernel, "affinity kernel")
     ->check(CLI::IsMember({"exponential", "gaussian"}))
@@ -78,18 +83,25 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     t0 = now;
   };
 
-  std::size_t k = 0;
-  try
+  std::size_t k = 0; // 0: automatic
+  if(o.k != "auto")
   {
-    const long long v = std::stoll(o.k);
-    if(v < 1)
-      throw std::invalid_argument("k");
+    std::size_t used = 0;
+    long long v = 0;
+    try
+    {
+      v = std::stoll(o.k, &used);
+    }
+    catch(const std::exception&)
+    {
+      used = 0;
+    }
+    if(used != o.k.size() || v < 1)
+      throw SpectralSeg::Invalid_input("--k must be a positive integer or 'auto' (got '" + o.k + "')");
     k = static_cast<std::size_t>(v);
   }
-  catch(const std::exception&)
-  {
-    throw SpectralSeg::Invalid_input("--k must be a positive integer (got '" + o.k + "')");
-  }
+  if(k == 0 && o.max_k < 2)
+    throw SpectralSeg::Invalid_input("--max-k must be at least 2");
 
   const Loaded_mesh m(o.mesh, out);
   lap("read");
@@ -118,9 +130,12 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_compressed_sparse_row;
   else if(o.graph_cut_backend == "boost-list")
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_adjacency_list;
+  auto run = [&](const auto& kernel) {
+    return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, std::max<std::size_t>(2, std::min(o.max_k, n - 1)), kernel, options, exec)
+                  : SpectralSeg::segment_k_way(weighted, k, kernel, options, exec);
+  };
   const SpectralSeg::K_way_result r =
-    o.kernel == "gaussian" ? SpectralSeg::segment_k_way(weighted, k, SpectralSeg::Kernels::Gaussian_kernel(), options, exec)
-                           : SpectralSeg::segment_k_way(weighted, k, SpectralSeg::Kernels::Exponential_kernel(), options, exec);
+    o.kernel == "gaussian" ? run(SpectralSeg::Kernels::Gaussian_kernel()) : run(SpectralSeg::Kernels::Exponential_kernel());
   for(const auto& t : r.timings)
     timings.push_back(t);
   t0 = clock::now();
@@ -150,7 +165,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     }
     report["mesh"] = o.mesh;
     report["faces"] = n;
-    report["k"] = k;
+    report["k"] = k == 0 ? nlohmann::ordered_json("auto") : nlohmann::ordered_json(k);
     report["segments"] = r.number_of_segments;
     report["metric"] = metric.name();
     report["kernel"] = o.kernel;

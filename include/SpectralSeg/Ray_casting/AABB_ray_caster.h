@@ -60,6 +60,7 @@ public:
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
     tree_.build();
+    diagonal_ = geometry.bbox_diagonal;
   }
 
   AABB_ray_caster(const AABB_ray_caster&) = delete;
@@ -71,13 +72,28 @@ public:
   /// Distance from `origin` along the unit vector `direction` to the first
   /// face hit, ignoring face `skip`; `+infinity` if the ray hits nothing.
   /// If `hit_face` is not null it receives the face hit (or `no_face`).
+  /// With a finite `max_distance`, a ray that hits nothing closer than it may
+  /// return `+infinity` early (a cheap segment test runs first); a hit that
+  /// is closer is always returned exactly.
   double first_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, size_type skip = no_face,
-                   size_type* hit_face = nullptr) const
+                   size_type* hit_face = nullptr,
+                   double max_distance = std::numeric_limits<double>::infinity()) const
   {
     if(hit_face)
       *hit_face = no_face;
     if(triangles_.empty())
       return std::numeric_limits<double>::infinity();
+    if(std::isfinite(max_distance))
+    {
+      // The segment starts a hair away from the origin so that the face the
+      // origin lies on (the skipped one) does not count.
+      const double offset = 1e-9 * diagonal_;
+      if(max_distance <= offset)
+        return std::numeric_limits<double>::infinity();
+      const K::Segment_3 segment(point(origin + offset * direction), point(origin + max_distance * direction));
+      if(!tree_.do_intersect(segment))
+        return std::numeric_limits<double>::infinity();
+    }
     const K::Point_3 o = point(origin);
     const K::Ray_3 ray(o, K::Vector_3(direction.x(), direction.y(), direction.z()));
     const Iterator skipped = skip == no_face ? triangles_.cend() : triangle_of_face(skip);
@@ -117,6 +133,7 @@ private:
   std::vector<K::Triangle_3> triangles_;
   std::vector<size_type> face_of_triangle_;
   Tree tree_;
+  double diagonal_ = 0.;
 };
 
 } // namespace Ray_casting

@@ -168,7 +168,8 @@ public:
   /// (or if `origin` or `direction` is not finite, or `direction` is zero).
   /// If `hit_face` is not null it receives the face hit (or `no_face`).
   double first_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, size_type skip = no_face,
-                   size_type* hit_face = nullptr) const
+                   size_type* hit_face = nullptr,
+                   double max_distance = std::numeric_limits<double>::infinity()) const
   {
     if(hit_face)
       *hit_face = no_face;
@@ -188,7 +189,8 @@ public:
     ray.dir_y = d.y();
     ray.dir_z = d.z();
     ray.time = 0.f;
-    ray.tfar = std::numeric_limits<float>::infinity();
+    ray.tfar = std::isfinite(max_distance) ? float(max_distance / double(d.norm())) * (1.f + 1e-6f)
+                                           : std::numeric_limits<float>::infinity();
     ray.mask = 0xFFFFFFFFu;
     ray.id = 0;
     ray.flags = 0;

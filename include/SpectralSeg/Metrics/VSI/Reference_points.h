@@ -101,13 +101,16 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
       return;
     std::vector<Eigen::Vector3d> dirs;
     rotate_to(-normal, cone, dirs);
-    std::vector<double> hits(dirs.size());
-    caster.first_hits(geo.centroids[f], dirs.data(), dirs.size(), static_cast<typename RayCaster::size_type>(f),
-                      hits.data());
+    // A ray at angle theta can only lower the estimate d if it hits closer
+    // than d cos(theta): later rays are cast with that bound.
+    const auto skip = static_cast<typename RayCaster::size_type>(f);
     double d = std::numeric_limits<double>::infinity();
     for(std::size_t j = 0; j < dirs.size(); ++j)
-      if(std::isfinite(hits[j]))
-        d = std::min(d, hits[j] / cone[j].z()); // cone[j].z() = cos(theta_j)
+    {
+      const double t = caster.first_hit(geo.centroids[f], dirs[j], skip, nullptr, d * cone[j].z());
+      if(std::isfinite(t))
+        d = std::min(d, t / cone[j].z()); // cone[j].z() = cos(theta_j)
+    }
     if(std::isfinite(d))
     {
       out.diameters[f] = d;
