@@ -34,6 +34,7 @@
 #include <CGAL/mesh_segmentation.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -180,7 +181,19 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
                         : o.sampling == "nystrom" ? SpectralSeg::Embedding::Method::nystrom
                                                   : SpectralSeg::Embedding::Method::automatic;
   if(o.auto_k > 0)
-    return SpectralSeg::segment_k_way_automatic(wg, o.auto_k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec).labels;
+  {
+    const double threshold = std::getenv("SPECTRALSEG_AUTO_K_THRESHOLD") ? std::atof(std::getenv("SPECTRALSEG_AUTO_K_THRESHOLD")) : 0.3;
+    const auto r = SpectralSeg::segment_k_way_automatic(wg, o.auto_k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec, threshold);
+    if(std::getenv("SPECTRALSEG_PRINT_SPECTRUM"))
+    {
+      const auto e = SpectralSeg::internal::embed(wg, o.auto_k, SpectralSeg::Kernels::Exponential_kernel(), ko.embedding, exec);
+      std::fprintf(stderr, "spectrum %zu %.6g", k, e.first_eigenvalue);
+      for(Eigen::Index i = 0; i < e.eigenvalues.size(); ++i)
+        std::fprintf(stderr, " %.6g", e.eigenvalues(i));
+      std::fprintf(stderr, "\n");
+    }
+    return r.labels;
+  }
   const auto r = o.kernel == "gaussian" ? SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Gaussian_kernel(), ko, exec)
                                         : SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec);
   return r.labels;

@@ -138,7 +138,7 @@
 ///         = 2,000 faces, Nyström above), `exact` or `nystrom`</td>
 ///     <td>`Embedding::Method::automatic`</td>
 ///     <td>`k_way_segmentation()`, `spectral_embedding()`</td></tr>
-/// <tr><td>`number_of_samples`</td><td>`std::size_t`</td>
+/// <tr><td>`number_of_nystrom_samples`</td><td>`std::size_t`</td>
 ///     <td>number of Nyström samples; `0` means the number of dimensions
 ///         plus one</td>
 ///     <td>`0` (that is, \f$k + 1\f$)</td>
@@ -152,8 +152,8 @@
 ///     <td>whether the K-means labels are refined by the graph cut</td>
 ///     <td>`true`</td>
 ///     <td>`k_way_segmentation()`</td></tr>
-/// <tr><td>`graph_cut_options`</td><td>`K_way_options` (the whole set of
-///         k-way options, not only `Refinement::Graph_cut_options`)</td>
+/// <tr><td>`k_way_options`</td><td>`K_way_options` (the whole set of
+///         k-way options)</td>
 ///     <td>starting values of all k-way options; the parameters above
 ///         override the fields they name</td>
 ///     <td>`K_way_options()`</td>

@@ -35,7 +35,7 @@ int main(int argc, char** argv)
     return 1;
   }
 
-  // The dual graph and its part-aware weights (thesis defaults), computed once.
+  // The dual graph and its part-aware weights (thesis coefficients; components normalised by their 99th percentile), computed once.
   const SpectralSeg::Dual_graph graph = SpectralSeg::make_dual_graph(mesh);
   const std::vector<double> weights = SpectralSeg::Metrics::Part_aware_weight<>()(graph);
   const SpectralSeg::Weighted_dual_graph weighted(graph, weights);

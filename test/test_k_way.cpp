@@ -127,6 +127,10 @@ TEST_CASE("k-way entry point on a mesh; every segment is connected; bad k", "[k_
   std::vector<int> copy = labels;
   CHECK(Refinement::make_segments_connected(s.graph, copy) == 5);
 
+  CHECK(k_way_segmentation(s.mesh, 5, seg,
+                           parameters::number_of_nystrom_samples(8)
+                             .embedding_method(Embedding::Method::nystrom)
+                             .random_seed(3)) == 5);
   CHECK(k_way_segmentation(s.mesh, 1, seg) == 1);
   CHECK_THROWS_AS(k_way_segmentation(s.mesh, 0, seg), Invalid_input);
   CHECK_THROWS_WITH(k_way_segmentation(s.mesh, num_faces(s.mesh) + 1, seg), Catch::Contains("k must be"));

@@ -5,6 +5,8 @@
 // never included by code.
 
 /// \ingroup PkgSpectralSegConcepts
+/// \cgalConcept
+///
 /// \brief Turns the distance between two faces into an affinity (a
 /// similarity in \f$[0, 1]\f$) for the spectral embedding.
 ///

@@ -5,6 +5,8 @@
 // never included by code.
 
 /// \ingroup PkgSpectralSegConcepts
+/// \cgalConcept
+///
 /// \brief A metric policy: gives every edge of a dual graph a weight, so that
 /// shortest paths in the graph define a distance between faces.
 ///

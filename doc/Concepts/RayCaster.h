@@ -5,6 +5,8 @@
 // never included by code.
 
 /// \ingroup PkgSpectralSegConcepts
+/// \cgalConcept
+///
 /// \brief A ray-casting backend: finds where rays leave from a point and
 /// first meet the triangles of a mesh.
 ///

@@ -75,7 +75,8 @@ auto metric_from(const NamedParameters& np)
 /// \param distances receives each face's distance; `+infinity` for a face in
 ///        a connected component without a source
 /// \param np optional named parameters among:
-///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Part_aware_weight<>()`, the thesis's part-aware metric
+///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Part_aware_weight<>()`, the part-aware metric
+///     (geodesic, angular and VSI blended; components normalised by their 99th percentile)
 ///   - `nearest_source_map`: a writable property map from faces to
 ///     `std::size_t`, receiving the position in `sources` of each face's
 ///     nearest source (`Nearest_source_distances::unreachable` if none)

@@ -11,6 +11,7 @@
 #include <SpectralSeg/Embedding/exact_spectral_embedding.h>
 #include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
+#include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/Refinement/connected_segments.h>
 #include <SpectralSeg/Refinement/graph_cut_boundaries.h>
 #include <SpectralSeg/face_distances.h>
@@ -150,27 +151,20 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
 ///
 /// With \f$\lambda_1 \ge \lambda_2 \ge \dots\f$ the leading eigenvalues
 /// of the affinity matrix (\f$\lambda_1\f$ is the one dropped for
-/// centring), an affinity made of \f$c\f$ well-separated blocks has \f$c\f$
-/// large eigenvalues followed by a drop. The rule returns the \f$k \in [2,
-/// k_{max}]\f$ with the largest relative gap \f$(\lambda_k -
-/// \lambda_{k+1}) / \lambda_k\f$ (ties to the smaller \f$k\f$).
-inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding& e, std::size_t max_k)
+/// centring, \f$\lambda_2\f$ the largest kept one), each part of a shape
+/// contributes a large eigenvalue. The rule counts the eigenvalues after the
+/// first that reach `threshold` times \f$\lambda_2\f$, adds one for the
+/// first, and clamps the result to \f$[2, k_{max}]\f$. The default 0.3 was
+/// fitted on psb-dev (our choice; the thesis takes k from the user).
+inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding& e, std::size_t max_k,
+                                             double threshold = 0.3)
 {
-  std::vector<double> lambda{e.first_eigenvalue};
+  std::size_t count = 0;
+  const double lambda2 = e.eigenvalues.size() > 0 ? e.eigenvalues(0) : 0.;
   for(Eigen::Index i = 0; i < e.eigenvalues.size(); ++i)
-    lambda.push_back(e.eigenvalues(i));
-  std::size_t best = 2;
-  double best_gap = -1.;
-  for(std::size_t k = 2; k <= max_k && k < lambda.size(); ++k)
-  {
-    const double gap = lambda[k - 1] > 0 ? (lambda[k - 1] - lambda[k]) / lambda[k - 1] : 0.;
-    if(gap > best_gap)
-    {
-      best_gap = gap;
-      best = k;
-    }
-  }
-  return std::min(best, std::max<std::size_t>(lambda.size() - 1, 1));
+    if(e.eigenvalues(i) >= threshold * lambda2)
+      ++count;
+  return std::max<std::size_t>(2, std::min(max_k, count + 1));
 }
 
 /// \ingroup PkgSpectralSegKWay
@@ -180,9 +174,10 @@ inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding
 /// The embedding is computed once in `max_k` dimensions (Nyström: `max_k + 1`
 /// samples); K-means and the graph cut then run on its first \f$k\f$ columns.
 template <typename AffinityKernel = Kernels::Exponential_kernel>
-K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph, std::size_t max_k = 15,
+K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph, std::size_t max_k = 20,
                                      const AffinityKernel& kernel = AffinityKernel(),
-                                     const K_way_options& options = K_way_options(), const Execution& exec = Execution())
+                                     const K_way_options& options = K_way_options(), const Execution& exec = Execution(),
+                                     double threshold = 0.3)
 {
   const std::size_t n = graph.graph().number_of_faces();
   if(max_k < 2)
@@ -199,7 +194,8 @@ K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph, std::size
   const std::size_t dims = std::min(max_k, n - 1);
   r.embedding = internal::embed(graph, dims, kernel, options.embedding, exec);
   lap("embedding");
-  const std::size_t k = std::min(choose_number_of_segments(r.embedding, dims), std::size_t(r.embedding.coordinates.cols()));
+  const std::size_t k =
+    std::min(choose_number_of_segments(r.embedding, dims, threshold), std::size_t(r.embedding.coordinates.cols()));
   r.embedding.coordinates.conservativeResize(Eigen::NoChange, static_cast<Eigen::Index>(std::max<std::size_t>(k, 1)));
   r.embedding.eigenvalues.conservativeResize(static_cast<Eigen::Index>(std::max<std::size_t>(k, 1)));
   lap("choose k");
@@ -215,9 +211,9 @@ K_way_options k_way_options_from(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  K_way_options o = choose_parameter(get_parameter(np, SpectralSeg::internal_np::graph_cut_options), K_way_options());
+  K_way_options o = choose_parameter(get_parameter(np, SpectralSeg::internal_np::k_way_options), K_way_options());
   o.embedding.method = choose_parameter(get_parameter(np, SpectralSeg::internal_np::embedding_method), o.embedding.method);
-  o.embedding.samples = choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_samples), o.embedding.samples);
+  o.embedding.samples = choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_nystrom_samples), o.embedding.samples);
   o.embedding.sampling = choose_parameter(get_parameter(np, SpectralSeg::internal_np::sampling_method), o.embedding.sampling);
   o.embedding.seed = static_cast<unsigned int>(
     choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), o.embedding.seed));
@@ -245,11 +241,12 @@ K_way_options k_way_options_from(const NamedParameters& np)
 ///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Part_aware_weight<>()`
 ///   - `kernel`: a model of `AffinityKernel`; default `Kernels::Exponential_kernel()`
 ///   - `embedding_method`: `Embedding::Method::automatic` (default), `exact` or `nystrom`
-///   - `number_of_samples`: Nyström samples; default `k + 1`
+///   - `number_of_nystrom_samples`: Nyström samples; default `k + 1`
 ///   - `sampling_method`: `Embedding::Sampling_method::farthest_point` (default) or `gamma`
 ///   - `random_seed`: seed of the sampling's start face (default 0)
 ///   - `boundary_enhancement`: graph-cut refinement, default `true`
-///   - `graph_cut_options`: a whole `K_way_options` (the options above override its fields)
+///   - `k_way_options`: a whole `K_way_options` (\f$\mu\f$, \f$\nu\f$, graph-cut backend, ...;
+///     the parameters above override its fields)
 ///   - `number_of_threads`, `progress_callback`, `vertex_point_map`,
 ///     `vertex_index_map`, `face_index_map`: as for `face_distances()`
 ///

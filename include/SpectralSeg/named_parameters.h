@@ -26,10 +26,10 @@ namespace internal_np {
   P(nearest_source_map_t, nearest_source_map) \
   P(kernel_t, kernel)                   \
   P(embedding_method_t, embedding_method) \
-  P(number_of_samples_t, number_of_samples) \
+  P(number_of_nystrom_samples_t, number_of_nystrom_samples) \
   P(sampling_method_t, sampling_method) \
   P(boundary_enhancement_t, boundary_enhancement) \
-  P(graph_cut_options_t, graph_cut_options)
+  P(k_way_options_t, k_way_options)
 
 #define SPECTRALSEG_DECLARE_TAG(X, Y) enum X { Y };
 SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_DECLARE_TAG)

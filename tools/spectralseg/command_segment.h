@@ -28,7 +28,7 @@ struct Segment_options
 {
   std::string mesh;
   std::string k;
-  std::size_t max_k = 15;
+  std::size_t max_k = 20;
   Metric_options metric;
   std::string kernel = "exponential";
   std::string sampling = "auto";
@@ -45,8 +45,8 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
   CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way)");
   cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
   cmd->add_option("--k", o.k,
-                  "number of segments: a positive integer, or 'auto' to choose it (2 to --max-k) from the largest "
-                  "relative gap in the spectrum of the affinity matrix")
+                  "number of segments: a positive integer, or 'auto' to choose it (2 to --max-k) from the "
+                  "spectrum of the affinity matrix (eigenvalues reaching 0.3 times the largest kept one)")
     ->required();
   cmd->add_option("--max-k", o.max_k, "largest k considered by --k auto")->capture_default_str();
   add_metric_options(*cmd, o.metric);
@@ -54,7 +54,7 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
     ->check(CLI::IsMember({"exponential", "gaussian"}))
     ->capture_default_str();
   cmd->add_option("--sampling", o.sampling,
-                  "embedding: exact (full matrix), nystrom (sampled rows) or auto (exact up to 2000 faces)")
+                  "embedding: exact (full matrix), nystrom (farthest-point samples), gamma (Nyström with Gamma-sampling) or auto (exact up to 2000 faces, nystrom above)")
     ->check(CLI::IsMember({"auto", "exact", "nystrom", "gamma"}))
     ->capture_default_str();
   cmd->add_option("--samples", o.samples, "Nyström samples (default k + 1)");

@@ -41,6 +41,7 @@ inline void add_metric_options(CLI::App& cmd, Metric_options& o)
                  "first; the coefficients are scaled to add up to 1)")
     ->delimiter(',')
     ->expected(2, 3)
+    ->type_name("A,B[,C]")
     ->capture_default_str();
   std::vector<std::string> casters{"aabb"};
 #ifdef SPECTRALSEG_HAS_EMBREE
