@@ -8,16 +8,19 @@ bash scripts/build.sh
 OUT=${OUT:-output}
 mkdir -p "$OUT"
 MESH=data/human_man.off
-./build/tools/spectralseg info "$MESH"
-# Distances from a face on the belly: the concave joints (neck, armpits,
-# hips) show up as steps under the angular metric and not under the
-# geodesic one; the part-aware metric (the default) separates the limbs.
-./build/tools/spectralseg distance "$MESH" --from 6863 --metric geodesic \
-  --field "$OUT/human_geodesic.txt" --png "$OUT/human_geodesic.png"
-./build/tools/spectralseg distance "$MESH" --from 6863 --metric angular \
-  --field "$OUT/human_angular.txt" --png "$OUT/human_angular.png"
-./build/tools/spectralseg distance "$MESH" --from 6863 --metric part-aware \
-  --field "$OUT/human_part_aware.txt" --png "$OUT/human_part_aware.png"
+SEG=./build/tools/spectralseg
+$SEG info "$MESH"
+# The main job: k-way segmentation with the part-aware metric
+# (head, torso, arms, legs; the ears come out as parts of their own).
+$SEG segment "$MESH" --k 8 --labels "$OUT/human_k8.seg" --mesh "$OUT/human_k8.ply" \
+  --png "$OUT/human_k8.png" --json "$OUT/human_k8.json"
+# Distance fields from a face on the belly: the concave joints show up as
+# steps under the angular metric and not under the geodesic one; the
+# part-aware metric (the default) separates the limbs.
+for metric in geodesic angular part-aware; do
+  $SEG -q distance "$MESH" --from 6863 --metric $metric \
+    --field "$OUT/human_$metric.txt" --png "$OUT/human_$metric.png"
+done
 echo
 echo "outputs written to $(cd "$OUT" && pwd):"
 ls -1 "$OUT" | sed 's/^/  /'

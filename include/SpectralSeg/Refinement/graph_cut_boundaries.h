@@ -48,6 +48,10 @@ struct Graph_cut_options
   double angular_mapping = 10.;
   /// angular weight \f$\epsilon\f$ of convex folds
   double convex_weight = 0.001;
+  /// divide edge lengths by the mean dual-edge length instead of the
+  /// longest one (the thesis): on real meshes the longest edge is often many
+  /// times the typical one, which leaves the smoothness term without effect
+  bool normalize_by_mean_edge = false;
   /// max-flow implementation: MaxFlow when available (the fastest), else
   /// Boost on compressed sparse rows
 #ifdef SPECTRALSEG_USE_MAXFLOW
@@ -105,7 +109,14 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
 
   // Smoothness term per dual edge.
   const Metrics::Angular_weight angular(options.convex_weight);
-  const double longest = graph.longest_edge_length() > 0 ? graph.longest_edge_length() : 1.;
+  double longest = graph.longest_edge_length() > 0 ? graph.longest_edge_length() : 1.;
+  if(options.normalize_by_mean_edge && graph.number_of_edges() > 0)
+  {
+    double sum = 0.;
+    for(const Dual_graph::Edge& e : graph.edges())
+      sum += e.length;
+    longest = sum > 0 ? sum / double(graph.number_of_edges()) : longest;
+  }
   const double log_norm = std::log(options.angular_mapping + 1.);
   std::vector<std::pair<std::size_t, std::size_t>> edges;
   std::vector<double> edge_costs;
