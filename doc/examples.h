@@ -23,3 +23,7 @@
 /// by its nearest sample and the picture is written as a PNG file with
 /// `SpectralSeg::Rendering::render_face_labels_png()`. Usage:
 /// `part_aware_sampling [mesh.off] [samples=8] [out.png]`.
+
+/// \example k_way_segmentation.cpp
+/// k-way segmentation of a `CGAL::Surface_mesh` with the defaults, segment
+/// areas, a coloured PLY, and the spectral embedding clustered by hand.
