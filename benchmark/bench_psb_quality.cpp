@@ -17,7 +17,7 @@
 //   --ray-caster aabb|embree  --threads N  --normalization p99|max
 //   --samples-factor F (Nyström samples F*k+1)  --vsi-fraction F
 //   --auto-k MAX   choose k from the spectrum (k in [2, MAX]) instead of k_by_model
-//   --mu M         graph-cut smoothness (default 0.3)
+//   --mu M         graph-cut smoothness (default 0.3)   --mean-edge   --max-min-seeds
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
@@ -76,6 +76,7 @@ struct Options
   std::size_t auto_k = 0; // > 0: choose k from the spectrum, at most this many
   double mu = 0.3;         // graph-cut smoothness
   bool mean_edge = false;  // graph cut: edge lengths over the mean edge length
+  bool max_min_seeds = false; // K-means seeded by max-min in the embedding instead of the samples
 };
 
 
@@ -181,6 +182,7 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   ko.boundary_enhancement = o.graph_cut;
   ko.graph_cut.smoothness = o.mu;
   ko.graph_cut.normalize_by_mean_edge = o.mean_edge;
+  ko.seed_with_samples = !o.max_min_seeds;
   ko.embedding.samples = o.samples_factor > 0 ? static_cast<std::size_t>(o.samples_factor * double(k)) + 1 : o.samples;
   ko.embedding.method = o.sampling == "exact"   ? SpectralSeg::Embedding::Method::exact
                         : o.sampling == "nystrom" ? SpectralSeg::Embedding::Method::nystrom
@@ -275,6 +277,8 @@ int main(int argc, char** argv)
       o.ray_caster = next();
     else if(a == "--normalization")
       o.normalization = next();
+    else if(a == "--max-min-seeds")
+      o.max_min_seeds = true;
     else if(a == "--mean-edge")
       o.mean_edge = true;
     else if(a == "--mu")
