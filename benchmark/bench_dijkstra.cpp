@@ -8,6 +8,7 @@
 // Prints a markdown table: mesh, faces, dual-graph build, weights, Dijkstra
 // (median of the repeats), all single-threaded.
 #include "subdivide.h"
+#include "timing.h"
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
@@ -27,13 +28,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
 namespace {
-template <typename F>
-double seconds(const F& f)
-{
-  const auto t0 = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+using spectralseg_bench::seconds;
 
 } // namespace
 

@@ -8,6 +8,7 @@
 //
 // usage: bench_part_aware_metric MESH [levels=1] [threads=0 (all)]
 #include "subdivide.h"
+#include "timing.h"
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
@@ -28,13 +29,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
 namespace {
-template <typename F>
-double seconds(const F& f)
-{
-  const auto t0 = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+using spectralseg_bench::seconds;
 
 template <typename RayCaster>
 double time_part_aware(const SpectralSeg::Dual_graph& g, unsigned threads)

@@ -211,6 +211,20 @@ K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph, std::size
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// What both mesh entry points need: the execution, the dual graph of the
+// mesh and its weights under the chosen metric.
+struct Weighted_mesh_graph
+{
+  template <typename TriangleMesh, typename NamedParameters>
+  Weighted_mesh_graph(const TriangleMesh& tm, const NamedParameters& np)
+    : exec(execution_from(np)), graph(make_dual_graph(tm, np)),
+      weighted(graph, metric_weights(metric_from(np), graph, exec))
+  {}
+  Execution exec;
+  Dual_graph graph;
+  Weighted_dual_graph weighted;
+};
+
 template <typename NamedParameters>
 K_way_options k_way_options_from(const NamedParameters& np)
 {
@@ -266,11 +280,9 @@ std::size_t k_way_segmentation(const TriangleMesh& tm, std::size_t k, SegmentMap
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const Execution exec = internal::execution_from(np);
-  const Dual_graph graph = make_dual_graph(tm, np);
-  const Weighted_dual_graph weighted(graph, internal::metric_weights(internal::metric_from(np), graph, exec));
+  const internal::Weighted_mesh_graph g(tm, np);
   const auto kernel = choose_parameter(get_parameter(np, SpectralSeg::internal_np::kernel), Kernels::Exponential_kernel());
-  const K_way_result r = segment_k_way(weighted, k, kernel, internal::k_way_options_from(np), exec);
+  const K_way_result r = segment_k_way(g.weighted, k, kernel, internal::k_way_options_from(np), g.exec);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
   typedef typename boost::property_traits<SegmentMap>::value_type Label;
   for(auto f : faces(tm))
@@ -288,11 +300,9 @@ Embedding::Spectral_embedding spectral_embedding(const TriangleMesh& tm, std::si
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const Execution exec = internal::execution_from(np);
-  const Dual_graph graph = make_dual_graph(tm, np);
-  const Weighted_dual_graph weighted(graph, internal::metric_weights(internal::metric_from(np), graph, exec));
+  const internal::Weighted_mesh_graph g(tm, np);
   const auto kernel = choose_parameter(get_parameter(np, SpectralSeg::internal_np::kernel), Kernels::Exponential_kernel());
-  return internal::embed(weighted, dimensions, kernel, internal::k_way_options_from(np).embedding, exec);
+  return internal::embed(g.weighted, dimensions, kernel, internal::k_way_options_from(np).embedding, g.exec);
 }
 
 } // namespace SpectralSeg
