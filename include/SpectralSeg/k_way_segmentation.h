@@ -76,10 +76,28 @@ Embedding::Spectral_embedding embed(const Weighted_dual_graph& graph, std::size_
                : Embedding::nystrom_spectral_embedding(graph, dims, kernel, options, exec);
 }
 
+// Appends (stage, seconds since the previous call) to a timing list.
+class Stage_timer
+{
+public:
+  explicit Stage_timer(std::vector<std::pair<std::string, double>>& timings)
+    : timings_(timings), clock_(std::chrono::steady_clock::now())
+  {}
+  void operator()(const std::string& stage)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    timings_.emplace_back(stage, std::chrono::duration<double>(now - clock_).count());
+    clock_ = now;
+  }
+
+private:
+  std::vector<std::pair<std::string, double>>& timings_;
+  std::chrono::steady_clock::time_point clock_;
+};
+
 // K-means, graph cut and connected segments on r.embedding.
-template <typename Lap>
-void cluster(const Weighted_dual_graph& graph, std::size_t k, const K_way_options& options, K_way_result& r,
-             Lap& lap, const Execution& exec)
+inline void cluster(const Weighted_dual_graph& graph, std::size_t k, const K_way_options& options, K_way_result& r,
+                    Stage_timer& lap, const Execution& exec)
 {
   if(r.embedding.coordinates.cols() == 0)
     throw Error("k-way segmentation: the affinity matrix has no positive eigenvalue after the first");
@@ -130,12 +148,7 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     throw Invalid_input("k-way segmentation: k = " + std::to_string(k) + " but the mesh has " + std::to_string(n) +
                         " faces (k must be between 1 and the number of faces)");
   K_way_result r;
-  auto clock = std::chrono::steady_clock::now();
-  auto lap = [&](const std::string& stage) {
-    const auto now = std::chrono::steady_clock::now();
-    r.timings.emplace_back(stage, std::chrono::duration<double>(now - clock).count());
-    clock = now;
-  };
+  internal::Stage_timer lap(r.timings);
   if(k == 1 || n < 3)
   {
     r.labels.assign(n, 0);
@@ -190,12 +203,7 @@ K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph, std::size
   if(n < 3)
     return segment_k_way(graph, 1, kernel, options, exec);
   K_way_result r;
-  auto clock = std::chrono::steady_clock::now();
-  auto lap = [&](const std::string& stage) {
-    const auto now = std::chrono::steady_clock::now();
-    r.timings.emplace_back(stage, std::chrono::duration<double>(now - clock).count());
-    clock = now;
-  };
+  internal::Stage_timer lap(r.timings);
   const std::size_t dims = std::min(max_k, n - 1);
   r.embedding = internal::embed(graph, dims, kernel, options.embedding, exec);
   lap("embedding");
