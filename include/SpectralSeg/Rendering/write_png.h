@@ -6,6 +6,7 @@
 #define SPECTRALSEG_RENDERING_WRITE_PNG_H
 
 #include <SpectralSeg/Rendering/Image.h>
+#include <SpectralSeg/exceptions.h>
 
 #include <png.h>
 
@@ -98,7 +99,7 @@ inline bool write_png_stream(std::FILE* file, const Image& img, Png_error_state&
 /// \param path the output file, created or overwritten
 /// \param img the image; must be at least 1x1 with `3 * width * height` bytes
 /// \throws std::invalid_argument if the image is empty or inconsistent
-/// \throws std::runtime_error if the file cannot be opened or written; the
+/// \throws SpectralSeg::Io_error (a `std::runtime_error`) if the file cannot be opened or written; the
 ///         message names `path`
 inline void write_png(const std::string& path, const Image& img)
 {
@@ -112,7 +113,7 @@ inline void write_png(const std::string& path, const Image& img)
 
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if(file == nullptr)
-    throw std::runtime_error("write_png: cannot open '" + path + "' for writing: "
+    throw SpectralSeg::Io_error("write_png: cannot open '" + path + "' for writing: "
                              + std::strerror(errno));
 
   internal::Png_error_state state{};
@@ -120,9 +121,9 @@ inline void write_png(const std::string& path, const Image& img)
   const bool flushed = std::fflush(file) == 0 && !std::ferror(file);
   const bool closed = std::fclose(file) == 0;
   if(!encoded)
-    throw std::runtime_error("write_png: cannot write '" + path + "': " + state.message);
+    throw SpectralSeg::Io_error("write_png: cannot write '" + path + "': " + state.message);
   if(!flushed || !closed)
-    throw std::runtime_error("write_png: cannot write '" + path + "': " + std::strerror(errno));
+    throw SpectralSeg::Io_error("write_png: cannot write '" + path + "': " + std::strerror(errno));
 }
 
 } // namespace Rendering
