@@ -67,7 +67,9 @@ public:
   /// distances from one source face
   std::vector<double> distances(size_type source) const
   {
-    return distances(std::vector<size_type>(1, source)).distance;
+    std::vector<double> d;
+    run(std::vector<size_type>(1, source), d, nullptr);
+    return d;
   }
 
   /// distances to the nearest of several source faces (at least one); when
@@ -75,29 +77,8 @@ public:
   /// Dijkstra's order wins, which is deterministic
   Nearest_source_distances distances(const std::vector<size_type>& sources) const
   {
-    const Dual_graph::Csr& g = graph_.csr();
-    const std::size_t n = graph_.number_of_faces();
-    if(sources.empty())
-      throw Invalid_input("distances: no source face given");
-    for(size_type s : sources)
-      if(s >= n)
-        throw Invalid_input("distances: source face " + std::to_string(s) + " is out of range (the mesh has " +
-                            std::to_string(n) + " faces)");
-
     Nearest_source_distances out;
-    out.distance.assign(n, std::numeric_limits<double>::infinity());
-    out.nearest_source.assign(n, Nearest_source_distances::unreachable);
-    for(std::size_t i = sources.size(); i-- > 0;) // the first listed source wins a duplicate
-      out.nearest_source[sources[i]] = i;
-
-    const auto index = get(boost::vertex_index, g);
-    const auto weight = boost::make_iterator_property_map(arc_weights_.begin(), get(boost::edge_index, g));
-    const auto distance = boost::make_iterator_property_map(out.distance.begin(), index);
-    Nearest_recorder recorder{&out.nearest_source};
-    boost::dijkstra_shortest_paths(
-      g, sources.begin(), sources.end(), boost::dummy_property_map(), distance, weight, index,
-      std::less<double>(), boost::closed_plus<double>(std::numeric_limits<double>::infinity()),
-      std::numeric_limits<double>::infinity(), 0., boost::make_dijkstra_visitor(recorder));
+    run(sources, out.distance, &out.nearest_source);
     return out;
   }
 
@@ -117,6 +98,39 @@ public:
   }
 
 private:
+  // One Dijkstra run from `sources`; records the nearest source only when
+  // `nearest` is given (the single-source queries of distance_rows() skip it).
+  void run(const std::vector<size_type>& sources, std::vector<double>& distance,
+           std::vector<std::size_t>* nearest) const
+  {
+    const Dual_graph::Csr& g = graph_.csr();
+    const std::size_t n = graph_.number_of_faces();
+    if(sources.empty())
+      throw Invalid_input("distances: no source face given");
+    for(size_type s : sources)
+      if(s >= n)
+        throw Invalid_input("distances: source face " + std::to_string(s) + " is out of range (the mesh has " +
+                            std::to_string(n) + " faces)");
+    distance.assign(n, std::numeric_limits<double>::infinity());
+    const auto index = get(boost::vertex_index, g);
+    const auto weight = boost::make_iterator_property_map(arc_weights_.begin(), get(boost::edge_index, g));
+    const auto dmap = boost::make_iterator_property_map(distance.begin(), index);
+    const double inf = std::numeric_limits<double>::infinity();
+    if(nearest)
+    {
+      nearest->assign(n, Nearest_source_distances::unreachable);
+      for(std::size_t i = sources.size(); i-- > 0;) // the first listed source wins a duplicate
+        (*nearest)[sources[i]] = i;
+      boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
+                                     index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
+                                     boost::make_dijkstra_visitor(Nearest_recorder{nearest}));
+    }
+    else
+      boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
+                                     index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
+                                     boost::default_dijkstra_visitor());
+  }
+
   struct Nearest_recorder
   {
     typedef boost::on_edge_relaxed event_filter;
