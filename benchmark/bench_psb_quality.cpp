@@ -9,14 +9,21 @@
 // humans, then over the models).
 //
 // usage: bench_psb_quality PSB_DIR [options]
-//   --methods kway,sdf      methods to run (default kway)
+//   --methods kway,auto,sdf methods to run (default kway): k-way with the humans' k, k-way choosing k
+//                           itself (segment_k_way_automatic), CGAL's SDF segmentation (the peer)
+//   --markdown FILE.md      also write the tables to this file
+//   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --shard i/N             run only the models whose row number is i mod N
 //   --out FILE.tsv          per-model rows (default: stdout only)
 //   --alpha A --beta B --gamma C   part-aware coefficients
 //   --no-graph-cut  --sampling exact|nystrom|auto  --kernel exponential|gaussian
 //   --ray-caster aabb|embree  --threads N  --normalization p99|max
 //   --samples-factor F (Nyström samples F*k+1)  --vsi-fraction F
-//   --auto-k MAX   choose k from the spectrum (k in [2, MAX]) instead of k_by_model
+//   --auto-k MAX   choose k itself (segment_k_way_automatic, k in [2, MAX]) instead of k_by_model
+//   --auto-contrast C  its merge limit (boundary's mean concave angle over the mesh's, default 3)
+//   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
+//   --extra-clusters N  K-means clusters beyond k, merged back (default 3; 0 = thesis)
+//   --seed S       start face of the Nyström sampling
 //   --mu M         graph-cut smoothness (default 0.3)   --mean-edge   --max-min-seeds
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
@@ -24,6 +31,8 @@
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
+#include <SpectralSeg/Rendering/render_png.h>
+#include <array>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/k_way_segmentation.h>
 #ifdef SPECTRALSEG_HAS_EMBREE
@@ -58,6 +67,7 @@ struct Row
   std::string id, category, method;
   std::size_t faces = 0, k = 0, segments = 0;
   double ri_error = 0, seconds = 0;
+  std::vector<int> labels; // kept only for --png-dir
 };
 
 struct Options
@@ -71,9 +81,15 @@ struct Options
   unsigned threads = 0;
   std::string normalization = "p99"; // p99 (the library's default) or max (the thesis)
   std::size_t samples = 0;
+  int extra_clusters = -1;
+  double auto_contrast = 3;  // automatic k: merge while the weakest boundary's contrast is below this
+  double auto_spectrum = 0;  // > 0: --auto-k uses choose_number_of_segments with this threshold instead
+  unsigned seed = 0;         // start face of the Nyström sampling
+  std::string markdown;      // also write the tables to this file
+  std::string png_dir;       // pictures of the best and worst models of each method
   double samples_factor = 0; // experiment: Nyström samples = factor * k + 1
   double vsi_fraction = 0.01;
-  std::size_t auto_k = 0; // > 0: choose k from the spectrum, at most this many
+  std::size_t auto_k = 0; // > 0: method kway chooses k itself, at most this many (method auto: default 20)
   double mu = 0.3;         // graph-cut smoothness
   bool mean_edge = false;  // graph cut: edge lengths over the mean edge length
   bool max_min_seeds = false; // K-means seeded by max-min in the embedding instead of the samples
@@ -90,7 +106,7 @@ std::vector<std::string> split(const std::string& s, char sep)
   return out;
 }
 
-void print_tables(const std::vector<Row>& rows)
+void print_tables(const std::vector<Row>& rows, std::FILE* to = stdout)
 {
   std::map<std::string, std::map<std::string, std::pair<double, int>>> by_cat; // method -> category -> (sum, n)
   std::map<std::string, std::pair<double, int>> overall;
@@ -107,30 +123,30 @@ void print_tables(const std::vector<Row>& rows)
   std::vector<std::string> methods;
   for(const auto& m : overall)
     methods.push_back(m.first);
-  std::printf("\n| category |");
+  std::fprintf(to, "\n| category |");
   for(const auto& m : methods)
-    std::printf(" %s |", m.c_str());
-  std::printf("\n|---|");
+    std::fprintf(to, " %s |", m.c_str());
+  std::fprintf(to, "\n|---|");
   for(std::size_t i = 0; i < methods.size(); ++i)
-    std::printf("---:|");
-  std::printf("\n");
+    std::fprintf(to, "---:|");
+  std::fprintf(to, "\n");
   for(const auto& cat : by_cat.begin()->second)
   {
-    std::printf("| %s |", cat.first.c_str());
+    std::fprintf(to, "| %s |", cat.first.c_str());
     for(const auto& m : methods)
     {
       const auto& c = by_cat[m][cat.first];
-      std::printf(" %.3f |", c.second ? c.first / c.second : 0.);
+      std::fprintf(to, " %.3f |", c.second ? c.first / c.second : 0.);
     }
-    std::printf("\n");
+    std::fprintf(to, "\n");
   }
-  std::printf("| **all (%d models)** |", overall.begin()->second.second);
+  std::fprintf(to, "| **all (%d models)** |", overall.begin()->second.second);
   for(const auto& m : methods)
-    std::printf(" **%.3f** |", overall[m].first / overall[m].second);
-  std::printf("\n| total time (s) |");
+    std::fprintf(to, " **%.3f** |", overall[m].first / overall[m].second);
+  std::fprintf(to, "\n| total time (s) |");
   for(const auto& m : methods)
-    std::printf(" %.1f |", time[m]);
-  std::printf("\n");
+    std::fprintf(to, " %.1f |", time[m]);
+  std::fprintf(to, "\n");
 }
 
 std::vector<Row> read_rows(const std::string& path)
@@ -183,24 +199,24 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   ko.graph_cut.smoothness = o.mu;
   ko.graph_cut.normalize_by_mean_edge = o.mean_edge;
   ko.seed_with_samples = !o.max_min_seeds;
+  ko.embedding.seed = o.seed;
+  if(o.extra_clusters >= 0)
+    ko.extra_clusters = std::size_t(o.extra_clusters);
   ko.embedding.samples = o.samples_factor > 0 ? static_cast<std::size_t>(o.samples_factor * double(k)) + 1 : o.samples;
   ko.embedding.method = o.sampling == "exact"   ? SpectralSeg::Embedding::Method::exact
                         : o.sampling == "nystrom" ? SpectralSeg::Embedding::Method::nystrom
                                                   : SpectralSeg::Embedding::Method::automatic;
-  if(o.auto_k > 0)
-  {
-    const double threshold = std::getenv("SPECTRALSEG_AUTO_K_THRESHOLD") ? std::atof(std::getenv("SPECTRALSEG_AUTO_K_THRESHOLD")) : 0.3;
-    const auto r = SpectralSeg::segment_k_way_automatic(wg, o.auto_k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec, threshold);
-    if(std::getenv("SPECTRALSEG_PRINT_SPECTRUM"))
-    {
-      const auto e = SpectralSeg::internal::embed(wg, o.auto_k, SpectralSeg::Kernels::Exponential_kernel(), ko.embedding, exec);
-      std::fprintf(stderr, "spectrum %zu %.6g", k, e.first_eigenvalue);
-      for(Eigen::Index i = 0; i < e.eigenvalues.size(); ++i)
-        std::fprintf(stderr, " %.6g", e.eigenvalues(i));
-      std::fprintf(stderr, "\n");
-    }
-    return r.labels;
+  if(o.auto_k > 0 && o.auto_spectrum > 0)
+  { // k from the spectrum (choose_number_of_segments), then plain k-way
+    const auto e = SpectralSeg::internal::embed(wg, std::min<std::size_t>(o.auto_k, g.number_of_faces() - 1),
+                                                SpectralSeg::Kernels::Exponential_kernel(), ko.embedding, exec);
+    const std::size_t chosen = SpectralSeg::choose_number_of_segments(e, o.auto_k, o.auto_spectrum);
+    return SpectralSeg::segment_k_way(wg, chosen, SpectralSeg::Kernels::Exponential_kernel(), ko, exec).labels;
   }
+  if(o.auto_k > 0)
+    return SpectralSeg::segment_k_way_automatic(wg, o.auto_k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec,
+                                                o.auto_contrast)
+      .labels;
   const auto r = o.kernel == "gaussian" ? SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Gaussian_kernel(), ko, exec)
                                         : SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec);
   return r.labels;
@@ -220,6 +236,52 @@ std::vector<int> run_sdf(Mesh& mesh)
   return labels;
 }
 
+// Pictures of the two best and two worst models of each method, beside the
+// first human segmentation of the same model.
+void render_best_and_worst(const Options& o, std::vector<Row> rows)
+{
+  fs::create_directories(o.png_dir);
+  std::map<std::string, std::vector<const Row*>> by_method;
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.ri_error < b.ri_error; });
+  for(const Row& r : rows)
+    by_method[r.method].push_back(&r);
+  for(const auto& m : by_method)
+  {
+    const auto& list = m.second;
+    std::vector<std::pair<std::string, const Row*>> picks;
+    for(std::size_t i = 0; i < 2 && i < list.size(); ++i)
+      picks.emplace_back("best" + std::to_string(i + 1), list[i]);
+    for(std::size_t i = 0; i < 2 && i + 2 < list.size(); ++i)
+      picks.emplace_back("worst" + std::to_string(i + 1), list[list.size() - 1 - i]);
+    for(const auto& pick : picks)
+    {
+      const Row& r = *pick.second;
+      Mesh mesh;
+      const auto report = SpectralSeg::IO::read_mesh_file((fs::path(o.dir) / "off" / (r.id + ".off")).string(), mesh);
+      const SpectralSeg::Dual_graph g = SpectralSeg::make_dual_graph(mesh);
+      std::vector<std::array<double, 3>> points;
+      for(const auto& q : g.geometry().points)
+        points.push_back({q.x(), q.y(), q.z()});
+      std::vector<std::array<std::size_t, 3>> triangles;
+      for(const auto& t : g.geometry().triangles)
+        triangles.push_back({t[0], t[1], t[2]});
+      SpectralSeg::Rendering::Render_options ro;
+      ro.view_width = ro.view_height = 320;
+      const std::string stem = m.first + "_" + pick.first + "_" + r.id;
+      SpectralSeg::Rendering::render_face_labels_png((fs::path(o.png_dir) / (stem + ".png")).string(), points, triangles,
+                                                     r.labels, ro);
+      const std::vector<int> human_file = SpectralSeg::Evaluation::read_labels(
+        (fs::path(o.dir) / "seg" / r.id / (r.id + "_0.seg")).string());
+      std::vector<int> human(g.number_of_faces());
+      for(std::size_t f = 0; f < human.size(); ++f)
+        human[f] = human_file.at(report.input_face_of_face[f]);
+      SpectralSeg::Rendering::render_face_labels_png((fs::path(o.png_dir) / (stem + "_human.png")).string(), points,
+                                                     triangles, human, ro);
+      std::printf("png: %s (%s, %s, RI error %.3f)\n", stem.c_str(), r.category.c_str(), m.first.c_str(), r.ri_error);
+    }
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -236,6 +298,7 @@ int main(int argc, char** argv)
     print_tables(all);
     return 0;
   }
+  // --markdown applies to a normal run; a merge prints to stdout
   if(args.empty())
   {
     std::fprintf(stderr, "usage: %s PSB_DIR [--methods kway,sdf] [--shard i/N] [--out F.tsv] ...\n", argv[0]);
@@ -285,6 +348,18 @@ int main(int argc, char** argv)
       o.mu = std::stod(next());
     else if(a == "--auto-k")
       o.auto_k = std::stoul(next());
+    else if(a == "--auto-contrast")
+      o.auto_contrast = std::stod(next());
+    else if(a == "--auto-spectrum")
+      o.auto_spectrum = std::stod(next());
+    else if(a == "--markdown")
+      o.markdown = next();
+    else if(a == "--png-dir")
+      o.png_dir = next();
+    else if(a == "--seed")
+      o.seed = unsigned(std::stoul(next()));
+    else if(a == "--extra-clusters")
+      o.extra_clusters = std::stoi(next());
     else if(a == "--samples-factor")
       o.samples_factor = std::stod(next());
     else if(a == "--vsi-fraction")
@@ -334,15 +409,22 @@ int main(int argc, char** argv)
     for(const std::string& method : o.methods)
     {
       const auto t0 = std::chrono::steady_clock::now();
-      const std::vector<int> labels = method == "sdf" ? run_sdf(mesh) : run_kway(o, g, k);
+      if(method != "sdf" && method != "kway" && method != "auto")
+        throw std::runtime_error("unknown method '" + method + "' (kway, auto or sdf)");
+      Options mo = o;
+      if(method == "auto" && mo.auto_k == 0)
+        mo.auto_k = 20;
+      const std::vector<int> labels = method == "sdf" ? run_sdf(mesh) : run_kway(mo, g, k);
       const std::string method_name = method == "kway" && o.auto_k > 0 ? "kway-auto" : method;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       double ri = 0;
       for(const auto& h : humans)
         ri += SpectralSeg::Evaluation::rand_index_error(labels, h);
       ri /= double(humans.size());
-      Row r{id, category, method_name, g.number_of_faces(), k, 0, ri, seconds};
+      Row r{id, category, method_name, g.number_of_faces(), k, 0, ri, seconds, {}};
       r.segments = std::set<int>(labels.begin(), labels.end()).size();
+      if(!o.png_dir.empty())
+        r.labels = labels;
       rows.push_back(r);
       std::printf("%s\t%s\t%s\t%zu\t%zu\t%zu\t%.4f\t%.2f\n", id.c_str(), category.c_str(), method_name.c_str(), r.faces, k,
                   r.segments, ri, seconds);
@@ -353,5 +435,17 @@ int main(int argc, char** argv)
     }
   }
   print_tables(rows);
+  if(!o.markdown.empty())
+  {
+    std::FILE* md = std::fopen(o.markdown.c_str(), "w");
+    if(!md)
+      throw std::runtime_error("cannot write " + o.markdown);
+    std::fprintf(md, "Rand-index error (1 - RI, lower is better), averaged over each model's human segmentations, then "
+                     "over the models of each category; k = k_by_model for kway, chosen by the method for auto.\n");
+    print_tables(rows, md);
+    std::fclose(md);
+  }
+  if(!o.png_dir.empty())
+    render_best_and_worst(o, rows);
   return 0;
 }

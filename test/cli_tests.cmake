@@ -74,7 +74,9 @@ if(NOT json_text MATCHES "\"segments\": 4" OR NOT json_text MATCHES "\"timings_s
   message("FAIL: el.json lacks the segment count or the timings")
   math(EXPR failures "${failures} + 1")
 endif()
-run_cli(0 "segments: [2-9]" segment ${DATA}/elephant.off --k auto --labels ${WORK}/el_auto.seg -q)
+# --k auto stays within [2, --max-k]
+run_cli(0 "segments: ([2-9]|1[0-9]|20)\n" segment ${DATA}/elephant.off --k auto --labels ${WORK}/el_auto.seg -q)
+run_cli(0 "segments: [2-5]\n" segment ${DATA}/elephant.off --k auto --max-k 5 --labels ${WORK}/el_auto5.seg -q)
 run_cli(0 "rand_index_error: 0\n" eval --mesh ${DATA}/elephant.off ${WORK}/el.seg ${WORK}/el.seg)
 file(WRITE ${WORK}/short.seg "0\n1\n")
 run_cli(1 "labels but" eval --mesh ${DATA}/elephant.off ${WORK}/el.seg ${WORK}/short.seg)

@@ -55,8 +55,79 @@ TEST_CASE("k-way finds the body and the four limbs of a star", "[k_way]")
     const K_way_result r = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), with_method(m));
     CHECK(r.number_of_segments == 5);
     CHECK(r.embedding.exact == (m == Embedding::Method::exact));
+    CHECK(r.clusters.centroids.rows() == Eigen::Index(5 + K_way_options().extra_clusters));
     CHECK(Evaluation::rand_index_error(r.labels, s.soup.face_part) < 0.05);
+    // the thesis's method: K-means with exactly k clusters, no merging
+    K_way_options thesis = K_way_options::thesis();
+    thesis.embedding.method = m;
+    const K_way_result t = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), thesis);
+    CHECK(t.number_of_segments == 5);
+    CHECK(t.clusters.centroids.rows() == 5);
+    CHECK(Evaluation::rand_index_error(t.labels, s.soup.face_part) < 0.05);
   }
+}
+
+TEST_CASE("automatic k-way finds the five parts of the star by itself", "[k_way][automatic]")
+{
+  const Star& s = star();
+  const K_way_result r = segment_k_way_automatic(s.weighted);
+  // the five parts, give or take a sliver: on this sharp-edged shape a
+  // 31-face piece of the body whose boundary runs partly along the concave
+  // junction of a limb keeps a mean concave angle above the limit
+  CHECK(r.number_of_segments >= 5);
+  CHECK(r.number_of_segments <= 6);
+  CHECK(Evaluation::rand_index_error(r.labels, s.soup.face_part) < 0.05);
+  // a huge merge limit merges down to the minimum of 2 segments
+  const K_way_result two = segment_k_way_automatic(s.weighted, 20, Kernels::Exponential_kernel(), K_way_options(),
+                                                   Execution(), 1e6);
+  CHECK(two.number_of_segments == 2);
+  CHECK_THROWS_AS(segment_k_way_automatic(s.weighted, 1), Invalid_input);
+}
+
+TEST_CASE("segments merge across their weakest boundary first", "[k_way][merge]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(6));
+  const Dual_graph g = make_dual_graph(m);
+  REQUIRE(g.number_of_faces() == 12);
+  // three segments of four faces along the strip (faces are in strip order)
+  std::vector<int> thirds(12);
+  for(std::size_t f = 0; f < 12; ++f)
+    thirds[f] = int(f / 4);
+  // the 0|1 boundary is strong, the 1|2 one weak
+  std::vector<double> w(g.number_of_edges(), 0.5);
+  for(std::size_t d = 0; d < w.size(); ++d)
+  {
+    const auto& e = g.edge(Dual_graph::size_type(d));
+    const int a = thirds[e.face[0]], b = thirds[e.face[1]];
+    if(std::min(a, b) == 0 && std::max(a, b) == 1)
+      w[d] = 1.;
+    if(std::min(a, b) == 1 && std::max(a, b) == 2)
+      w[d] = 0.1;
+  }
+  std::vector<int> labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, w, labels, 2) == 2);
+  CHECK(labels[0] == 0);
+  CHECK(labels[4] == 1);
+  CHECK(labels[11] == 1);
+  CHECK(labels[3] != labels[4]);
+  // the limit keeps boundaries at least that strong
+  labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, w, labels, 1, 0.5) == 2);
+  labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, w, labels, 1) == 1);
+  labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, w, labels, 5) == 3);
+  CHECK(labels == thirds);
+  CHECK_THROWS_AS(Refinement::merge_weakest_boundaries(g, std::vector<double>(2, 0.), labels, 2), Invalid_input);
+
+  // concave folds are strong boundaries, convex ones are not
+  const Dual_graph valley = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::fold(0.5, true)));
+  const Dual_graph ridge = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::fold(0.5, false)));
+  const std::vector<double> wv = Refinement::concave_angle_weights(valley), wr = Refinement::concave_angle_weights(ridge);
+  REQUIRE(wv.size() == 1);
+  REQUIRE(wr.size() == 1);
+  CHECK(wv[0] == Approx(0.5));
+  CHECK(wr[0] == 0.);
 }
 
 TEST_CASE("exact and Nyström embeddings give the same segmentation", "[k_way][nystrom]")

@@ -50,7 +50,7 @@ public:
   /// \param weights one finite, non-negative weight per dual edge
   /// \throws Invalid_input if the weights are not valid
   Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights)
-    : graph_(graph), arc_weights_(num_edges(graph.csr()))
+    : graph_(graph), weights_(weights), arc_weights_(num_edges(graph.csr()))
   {
     Metrics::check_weights(graph, weights);
     const Dual_graph::Csr& g = graph.csr();
@@ -63,6 +63,9 @@ public:
 
   /// the dual graph
   const Dual_graph& graph() const { return graph_; }
+
+  /// the weight of each dual edge, indexed like `Dual_graph::edges()`
+  const std::vector<double>& weights() const { return weights_; }
 
   /// distances from one source face
   std::vector<double> distances(size_type source) const
@@ -143,6 +146,7 @@ private:
   };
 
   const Dual_graph& graph_;
+  std::vector<double> weights_;
   std::vector<double> arc_weights_;
 };
 

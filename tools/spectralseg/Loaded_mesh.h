@@ -7,6 +7,7 @@
 #include "Progress_printer.h"
 
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/Rendering/render_png.h>
 
@@ -69,6 +70,24 @@ struct Loaded_mesh
     return t;
   }
 };
+
+// Reads a label file in the face order of the mesh file and returns the
+// labels in the order of the mesh faces.
+inline std::vector<int> labels_in_mesh_order(const Loaded_mesh& m, const std::string& path)
+{
+  const std::vector<int> file_labels = SpectralSeg::Evaluation::read_labels(path);
+  const std::size_t file_faces = m.report.face_of_input_face.size();
+  if(file_labels.size() != file_faces)
+    throw SpectralSeg::Invalid_input("'" + path + "' has " + std::to_string(file_labels.size()) + " labels but '" +
+                                     m.report.path + "' has " + std::to_string(file_faces) +
+                                     " faces: a label file needs exactly one label per face of the mesh file, "
+                                     "in the file's face order");
+  const std::vector<std::size_t>& source = m.report.input_face_of_face;
+  std::vector<int> labels(source.size());
+  for(std::size_t f = 0; f < source.size(); ++f)
+    labels[f] = file_labels[source[f]];
+  return labels;
+}
 
 } // namespace spectralseg_cli
 

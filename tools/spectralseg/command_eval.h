@@ -42,24 +42,6 @@ inline void add_eval_command(CLI::App& app, Eval_options& o)
   cmd->add_option("--json", o.json, "also write the averaged and per-ground-truth scores to this JSON file");
 }
 
-// Reads a label file in the face order of the mesh file and returns the
-// labels in the order of the mesh faces.
-inline std::vector<int> labels_in_mesh_order(const Loaded_mesh& m, const std::string& path)
-{
-  const std::vector<int> file_labels = SpectralSeg::Evaluation::read_labels(path);
-  const std::size_t file_faces = m.report.face_of_input_face.size();
-  if(file_labels.size() != file_faces)
-    throw SpectralSeg::Invalid_input("'" + path + "' has " + std::to_string(file_labels.size()) + " labels but '" +
-                                     m.report.path + "' has " + std::to_string(file_faces) +
-                                     " faces: a label file needs exactly one label per face of the mesh file, "
-                                     "in the file's face order");
-  const std::vector<std::size_t>& source = m.report.input_face_of_face;
-  std::vector<int> labels(source.size());
-  for(std::size_t f = 0; f < source.size(); ++f)
-    labels[f] = file_labels[source[f]];
-  return labels;
-}
-
 inline nlohmann::ordered_json scores_json(const SpectralSeg::Evaluation::Scores& s)
 {
   nlohmann::ordered_json j; // NaN is written as null

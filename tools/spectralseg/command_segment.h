@@ -37,6 +37,8 @@ struct Segment_options
   std::string graph_cut_backend = "default";
   unsigned threads = 0;
   unsigned seed = 0;
+  std::size_t extra_clusters = SpectralSeg::K_way_options().extra_clusters;
+  double min_boundary_contrast = 3.;
   std::string labels, out_mesh, png, json;
 };
 
@@ -45,10 +47,15 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
   CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way)");
   cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
   cmd->add_option("--k", o.k,
-                  "number of segments: a positive integer, or 'auto' to choose it (2 to --max-k) from the "
-                  "spectrum of the affinity matrix (eigenvalues reaching 0.3 times the largest kept one)")
+                  "number of segments: a positive integer, or 'auto' to choose it (2 to --max-k): over-segment "
+                  "into --max-k clusters, then merge across the weakest boundaries while their mean concave "
+                  "angle is below --min-boundary-contrast times the mesh's mean")
     ->required();
   cmd->add_option("--max-k", o.max_k, "largest k considered by --k auto")->capture_default_str();
+  cmd->add_option("--min-boundary-contrast", o.min_boundary_contrast,
+                  "--k auto: segments are merged while their boundary's mean concave dihedral angle is below this "
+                  "many times the mean over the whole mesh")
+    ->capture_default_str();
   add_metric_options(*cmd, o.metric);
   cmd->add_option("--kernel", o.kernel, "affinity kernel")
     ->check(CLI::IsMember({"exponential", "gaussian"}))
@@ -57,7 +64,7 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
                   "embedding: exact (full matrix), nystrom (farthest-point samples), gamma (Nyström with Gamma-sampling) or auto (exact up to 2000 faces, nystrom above)")
     ->check(CLI::IsMember({"auto", "exact", "nystrom", "gamma"}))
     ->capture_default_str();
-  cmd->add_option("--samples", o.samples, "Nyström samples (default k + 1)");
+  cmd->add_option("--samples", o.samples, "Nyström samples (default: one more than the K-means clusters)");
   cmd->add_flag("--no-graph-cut", o.no_graph_cut, "skip the graph-cut boundary enhancement");
   cmd->add_option("--graph-cut-backend", o.graph_cut_backend,
                   "max-flow code of the graph cut: maxflow (fastest, GPL), boost-csr or boost-list (LGPL)")
@@ -65,6 +72,9 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
     ->capture_default_str();
   cmd->add_option("--threads", o.threads, "threads (0 = all); the labels do not depend on it");
   cmd->add_option("--seed", o.seed, "seed of the sampling's start face")->capture_default_str();
+  cmd->add_option("--extra-clusters", o.extra_clusters,
+                  "K-means makes k + N clusters, then the segments with the weakest (least concave) boundaries "
+                  "are merged until k are left (0: the thesis's method)")->capture_default_str();
   cmd->add_option("--labels", o.labels, "output: one segment label per face of the file, in file order")->required();
   cmd->add_option("--mesh", o.out_mesh, "output: the mesh with one colour per segment (.ply or .off)");
   cmd->add_option("--png", o.png, "output: picture of the segments");
@@ -123,6 +133,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     options.embedding.sampling = SpectralSeg::Embedding::Sampling_method::gamma;
   options.embedding.samples = o.samples;
   options.embedding.seed = o.seed;
+  options.extra_clusters = o.extra_clusters;
   options.boundary_enhancement = !o.no_graph_cut;
   if(o.graph_cut_backend == "maxflow")
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::maxflow;
@@ -131,7 +142,8 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   else if(o.graph_cut_backend == "boost-list")
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_adjacency_list;
   auto run = [&](const auto& kernel) {
-    return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, std::max<std::size_t>(2, std::min(o.max_k, n - 1)), kernel, options, exec)
+    return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, std::max<std::size_t>(2, std::min(o.max_k, n - 1)), kernel, options, exec,
+                                                            o.min_boundary_contrast)
                   : SpectralSeg::segment_k_way(weighted, k, kernel, options, exec);
   };
   const SpectralSeg::K_way_result r =

@@ -4,6 +4,7 @@
 #include "command_distance.h"
 #include "command_eval.h"
 #include "command_info.h"
+#include "command_render.h"
 #include "command_segment.h"
 
 #include <SpectralSeg/exceptions.h>
@@ -31,6 +32,8 @@ int main(int argc, char** argv)
   add_segment_command(app, segment);
   Eval_options eval;
   add_eval_command(app, eval);
+  Render_command_options render;
+  add_render_command(app, render);
 
   CLI11_PARSE(app, argc, argv);
   Progress_printer out(quiet);
@@ -44,6 +47,8 @@ int main(int argc, char** argv)
       return run_segment(segment, out);
     if(app.got_subcommand("eval"))
       return run_eval(eval, out);
+    if(app.got_subcommand("render"))
+      return run_render(render, out);
   }
   catch(const SpectralSeg::Error& e)
   {

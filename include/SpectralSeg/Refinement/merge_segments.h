@@ -1,0 +1,138 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file merge_segments.h
+/// \brief Merging the adjacent segments with the weakest boundary.
+#ifndef SPECTRALSEG_REFINEMENT_MERGE_SEGMENTS_H
+#define SPECTRALSEG_REFINEMENT_MERGE_SEGMENTS_H
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/exceptions.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace SpectralSeg {
+namespace Refinement {
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief Merges adjacent segments, weakest boundary first, until at most
+/// `k` segments are left; returns the number of segments.
+///
+/// The strength of the boundary between two adjacent segments is the mean of
+/// the dual-edge weights `weights` along it, each edge counted with the
+/// length of its mesh edge. With `concave_angle_weights()` (what
+/// `segment_k_way()` uses) a cut through a smooth stretch of surface is weak
+/// and the concave junction of a limb is strong, so repeatedly joining the
+/// two segments across the weakest boundary undoes the splits that K-means
+/// makes in large bodies. (The part-aware metric's own weights were tried
+/// too and do worse on psb-dev: 0.124 against 0.120 with two extra clusters,
+/// Embree ray casting.) Ties go to the pair with the smallest
+/// labels, so the result is deterministic. Segments with no neighbour (whole
+/// connected components) are never merged, so more than `k` may remain.
+/// Labels are renumbered `0 .. count-1` by their smallest face.
+///
+/// \param graph the dual graph
+/// \param weights one weight per dual edge (indexed like `Dual_graph::edges()`)
+/// \param labels one label per face, in and out
+/// \param k the number of segments wanted
+/// \param strength_limit merging also stops once the weakest boundary has
+///        at least this strength
+/// \throws Invalid_input if the sizes do not match the graph
+inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
+                                            std::vector<int>& labels, std::size_t k,
+                                            double strength_limit = std::numeric_limits<double>::infinity())
+{
+  const std::size_t n = graph.number_of_faces();
+  if(labels.size() != n || weights.size() != graph.number_of_edges())
+    throw Invalid_input("merge_weakest_boundaries: expected " + std::to_string(n) + " labels and " +
+                        std::to_string(graph.number_of_edges()) + " weights");
+  // dense labels 0 .. s-1 in order of first face
+  std::map<int, int> dense;
+  for(int& l : labels)
+    l = dense.emplace(l, int(dense.size())).first->second;
+  const std::size_t s = dense.size();
+  // boundary length and length-weighted weight sum between each pair
+  std::vector<double> length(s * s, 0.), strength(s * s, 0.);
+  for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
+  {
+    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
+    const std::size_t a = std::size_t(labels[e.face[0]]), b = std::size_t(labels[e.face[1]]);
+    if(a == b)
+      continue;
+    length[a * s + b] += e.length;
+    length[b * s + a] += e.length;
+    strength[a * s + b] += e.length * weights[d];
+    strength[b * s + a] += e.length * weights[d];
+  }
+  std::vector<int> target(s); // what each dense label became
+  for(std::size_t i = 0; i < s; ++i)
+    target[i] = int(i);
+  std::vector<char> alive(s, 1);
+  std::size_t count = s;
+  while(count > k)
+  {
+    double weakest = std::numeric_limits<double>::infinity();
+    std::size_t wa = s, wb = s;
+    for(std::size_t a = 0; a < s; ++a)
+      for(std::size_t b = a + 1; alive[a] && b < s; ++b)
+        if(alive[b] && length[a * s + b] > 0.)
+        {
+          const double mean = strength[a * s + b] / length[a * s + b];
+          if(mean < weakest)
+          {
+            weakest = mean;
+            wa = a;
+            wb = b;
+          }
+        }
+    if(wa == s || weakest >= strength_limit)
+      break; // no two live segments touch, or every boundary is strong enough
+    // b joins a
+    for(std::size_t c = 0; c < s; ++c)
+    {
+      if(c == wa || c == wb)
+        continue;
+      length[wa * s + c] += length[wb * s + c];
+      strength[wa * s + c] += strength[wb * s + c];
+      length[c * s + wa] = length[wa * s + c];
+      strength[c * s + wa] = strength[wa * s + c];
+      length[wb * s + c] = length[c * s + wb] = 0.;
+    }
+    length[wa * s + wb] = length[wb * s + wa] = 0.;
+    alive[wb] = 0;
+    for(int& t : target)
+      if(t == int(wb))
+        t = int(wa);
+    --count;
+  }
+  std::map<int, int> renumber;
+  for(int& l : labels)
+    l = renumber.emplace(target[std::size_t(l)], int(renumber.size())).first->second;
+  return renumber.size();
+}
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief A boundary-strength weight per dual edge for
+/// `merge_weakest_boundaries()`: the angle between the two face normals
+/// where the fold is concave, 0 where it is flat or convex.
+///
+/// Parts meet along concave creases (the minima rule); a seam through a
+/// smooth or convex stretch of surface has a mean of about 0.
+inline std::vector<double> concave_angle_weights(const Dual_graph& graph)
+{
+  std::vector<double> w(graph.number_of_edges());
+  for(std::size_t d = 0; d < w.size(); ++d)
+  {
+    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
+    w[d] = e.concave ? e.normal_angle : 0.;
+  }
+  return w;
+}
+
+} // namespace Refinement
+} // namespace SpectralSeg
+
+#endif
