@@ -11,6 +11,7 @@ PACKAGES=(
   libtbb-dev libembree-dev libopenmesh-dev
   catch2 libcli11-dev nlohmann-json3-dev libpng-dev
   doxygen
+  python3 gnuplot-nox
 )
 
 missing=()

@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <set>
 
 namespace {
@@ -119,6 +120,24 @@ TEST_CASE("segments merge across their weakest boundary first", "[k_way][merge]"
   CHECK(Refinement::merge_weakest_boundaries(g, w, labels, 5) == 3);
   CHECK(labels == thirds);
   CHECK_THROWS_AS(Refinement::merge_weakest_boundaries(g, std::vector<double>(2, 0.), labels, 2), Invalid_input);
+  // a segment under the area limit goes first, whatever its boundary: the
+  // last face alone (1/12 of the area) behind the strongest boundary
+  std::vector<int> flap = thirds;
+  flap[11] = 3;
+  std::vector<double> wf = w;
+  for(std::size_t d = 0; d < wf.size(); ++d)
+  {
+    const auto& e = g.edge(Dual_graph::size_type(d));
+    if(std::max(e.face[0], e.face[1]) == 11)
+      wf[d] = 5.;
+  }
+  labels = flap;
+  CHECK(Refinement::merge_weakest_boundaries(g, wf, labels, 3) == 3);
+  CHECK(labels[11] != labels[10]); // without the limit, 1|2 is weaker
+  labels = flap;
+  CHECK(Refinement::merge_weakest_boundaries(g, wf, labels, 3, std::numeric_limits<double>::infinity(), 0.1) == 3);
+  CHECK(labels[11] == labels[10]);
+  CHECK(labels[7] != labels[8]);
 
   // concave folds are strong boundaries, convex ones are not
   const Dual_graph valley = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::fold(0.5, true)));

@@ -29,7 +29,7 @@ inline void add_render_command(CLI::App& app, Render_command_options& o)
 {
   CLI::App* cmd = app.add_subcommand(
     "render", "Draw a segmentation given as a label file (for example a ground truth, or the output of "
-              "'segment'): a PNG picture from four sides and/or a mesh with one colour per segment");
+              "'segment'): a PNG picture from three sides and/or a mesh with one colour per segment");
   cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl) the labels refer to")->required();
   cmd->add_option("LABELS", o.labels, "one integer label per face of the mesh file, in file order (.seg)")->required();
   cmd->add_option("--png", o.png, "output: picture of the segments");

@@ -40,10 +40,15 @@ namespace Refinement {
 /// \param k the number of segments wanted
 /// \param strength_limit merging also stops once the weakest boundary has
 ///        at least this strength
+/// \param min_area_fraction segments with less than this fraction of the
+///        total area are merged first, smallest first, whatever their
+///        boundary (thin flaps such as ears have sharp creases but are
+///        rarely parts); the limit still applies
 /// \throws Invalid_input if the sizes do not match the graph
 inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                             std::vector<int>& labels, std::size_t k,
-                                            double strength_limit = std::numeric_limits<double>::infinity())
+                                            double strength_limit = std::numeric_limits<double>::infinity(),
+                                            double min_area_fraction = 0.)
 {
   const std::size_t n = graph.number_of_faces();
   if(labels.size() != n || weights.size() != graph.number_of_edges())
@@ -71,6 +76,14 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
   for(std::size_t i = 0; i < s; ++i)
     target[i] = int(i);
   std::vector<char> alive(s, 1);
+  std::vector<double> area(s, 0.);
+  double total_area = 0.;
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    area[std::size_t(labels[f])] += graph.geometry().areas[f];
+    total_area += graph.geometry().areas[f];
+  }
+  const double small = min_area_fraction * total_area;
   std::size_t count = s;
   while(count > k)
   {
@@ -80,7 +93,9 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
       for(std::size_t b = a + 1; alive[a] && b < s; ++b)
         if(alive[b] && length[a * s + b] > 0.)
         {
-          const double mean = strength[a * s + b] / length[a * s + b];
+          double mean = strength[a * s + b] / length[a * s + b];
+          if(std::min(area[a], area[b]) < small) // small segments go first, smallest first
+            mean = -1. + std::min(area[a], area[b]) / small;
           if(mean < weakest)
           {
             weakest = mean;
@@ -103,6 +118,7 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
     }
     length[wa * s + wb] = length[wb * s + wa] = 0.;
     alive[wb] = 0;
+    area[wa] += area[wb];
     for(int& t : target)
       if(t == int(wb))
         t = int(wa);
