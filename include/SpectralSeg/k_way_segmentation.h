@@ -217,7 +217,7 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
 /// first that reach `threshold` times \f$\lambda_2\f$, adds one for the
 /// first, and clamps the result to \f$[2, k_{max}]\f$ (our rule; the
 /// thesis takes k from the user). `segment_k_way(graph, k)` with this k
-/// scores 0.190 on psb-dev, against 0.138 for `segment_k_way_automatic()`,
+/// scores 0.189 on psb-dev, against 0.142 for `segment_k_way_automatic()`,
 /// which is why the latter does not use it.
 inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding& e, std::size_t max_k,
                                              double threshold = 0.3)
@@ -246,10 +246,12 @@ inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding
 /// so that it does not depend on the mesh resolution: coarse meshes have
 /// larger dihedral angles everywhere.
 ///
-/// On psb-dev this scores 0.138 (Rand-index error, Embree ray casting),
-/// against 0.190 for the number of segments of `choose_number_of_segments()`
-/// and 0.116 for k-way with the humans' k; the default contrast 3 was chosen
-/// there (2: 0.157, 4: 0.140, 6: 0.216). An absolute limit of 0.07 radians
+/// On psb-dev this scores 0.142 (Rand-index error), against 0.189 for the
+/// number of segments of `choose_number_of_segments()` and 0.116 for k-way
+/// with the humans' k; the default contrast 3 was chosen there (Embree ray
+/// casting, before the small-segment rule: 2: 0.157, 3: 0.138, 4: 0.140,
+/// 6: 0.216). Segments under `options.merge_min_area_fraction` of the area
+/// are merged whatever their boundary, as in `segment_k_way()`. An absolute limit of 0.07 radians
 /// scores 0.124 on psb-dev, whose meshes all have 8k to 50k faces, but
 /// over-segments coarse meshes (19 segments on the 5,558-face elephant).
 ///

@@ -1,6 +1,6 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// spectralseg render MESH LABELS.seg [--png OUT.png] [--mesh OUT.ply]
+// spectralseg render MESH LABELS.seg [--png OUT.png] [--mesh OUT.ply] [--view dx,dy,dz,ux,uy,uz ...]
 #ifndef SPECTRALSEG_TOOLS_COMMAND_RENDER_H
 #define SPECTRALSEG_TOOLS_COMMAND_RENDER_H
 
@@ -11,6 +11,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -23,7 +26,38 @@ struct Render_command_options
   std::string labels;
   std::string png;
   std::string out_mesh;
+  std::vector<std::string> views;
 };
+
+// "dx,dy,dz,ux,uy,uz" -> a view
+inline SpectralSeg::Rendering::View parse_view(const std::string& text, std::size_t index)
+{
+  std::vector<double> v;
+  std::size_t start = 0;
+  while(start <= text.size())
+  {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    std::size_t used = 0;
+    double x = 0.;
+    try
+    {
+      x = std::stod(item, &used);
+    }
+    catch(const std::exception&)
+    {
+      used = 0;
+    }
+    if(item.empty() || used != item.size() || !std::isfinite(x))
+      throw SpectralSeg::Invalid_input("--view '" + text + "': expected six numbers dx,dy,dz,ux,uy,uz");
+    v.push_back(x);
+    start = comma + 1;
+  }
+  if(v.size() != 6 || (v[0] == 0. && v[1] == 0. && v[2] == 0.) || (v[3] == 0. && v[4] == 0. && v[5] == 0.))
+    throw SpectralSeg::Invalid_input("--view '" + text +
+                                     "': expected six numbers dx,dy,dz,ux,uy,uz with non-zero direction and up vectors");
+  return SpectralSeg::Rendering::View{"view " + std::to_string(index + 1), {v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+}
 
 inline void add_render_command(CLI::App& app, Render_command_options& o)
 {
@@ -34,12 +68,23 @@ inline void add_render_command(CLI::App& app, Render_command_options& o)
   cmd->add_option("LABELS", o.labels, "one integer label per face of the mesh file, in file order (.seg)")->required();
   cmd->add_option("--png", o.png, "output: picture of the segments");
   cmd->add_option("--mesh", o.out_mesh, "output: the mesh with one colour per segment (.ply or .off)");
+  cmd->add_option("--view", o.views,
+                  "a view of the picture, repeatable: viewing direction (from the camera into the scene) and up "
+                  "vector as dx,dy,dz,ux,uy,uz (default: 0,0,-1,0,1,0 and -1,0,0,0,1,0 and 0,0,1,0,1,0: "
+                  "front, side, back)");
 }
 
 inline int run_render(const Render_command_options& o, const Progress_printer& out)
 {
   if(o.png.empty() && o.out_mesh.empty())
     throw SpectralSeg::Invalid_input("render: nothing to write; give --png and/or --mesh");
+  SpectralSeg::Rendering::Render_options ro;
+  if(!o.views.empty())
+  {
+    ro.views.clear();
+    for(std::size_t i = 0; i < o.views.size(); ++i)
+      ro.views.push_back(parse_view(o.views[i], i));
+  }
   const Loaded_mesh m(o.mesh, out);
   const std::vector<int> labels = labels_in_mesh_order(m, o.labels);
   if(!o.out_mesh.empty())
@@ -49,7 +94,7 @@ inline int run_render(const Render_command_options& o, const Progress_printer& o
   }
   if(!o.png.empty())
   {
-    SpectralSeg::Rendering::render_face_labels_png(o.png, m.points(), m.triangles(), labels);
+    SpectralSeg::Rendering::render_face_labels_png(o.png, m.points(), m.triangles(), labels, ro);
     std::cout << "png: " << o.png << "\n";
   }
   return 0;

@@ -43,7 +43,7 @@ namespace Refinement {
 /// \param min_area_fraction segments with less than this fraction of the
 ///        total area are merged first, smallest first, whatever their
 ///        boundary (thin flaps such as ears have sharp creases but are
-///        rarely parts); the limit still applies
+///        rarely parts), even across a boundary above `strength_limit`
 /// \throws Invalid_input if the sizes do not match the graph
 inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                             std::vector<int>& labels, std::size_t k,
@@ -87,23 +87,26 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
   std::size_t count = s;
   while(count > k)
   {
-    double weakest = std::numeric_limits<double>::infinity();
+    double cheapest = std::numeric_limits<double>::infinity();
     std::size_t wa = s, wb = s;
     for(std::size_t a = 0; a < s; ++a)
       for(std::size_t b = a + 1; alive[a] && b < s; ++b)
         if(alive[b] && length[a * s + b] > 0.)
         {
-          double mean = strength[a * s + b] / length[a * s + b];
+          const double mean = strength[a * s + b] / length[a * s + b];
+          double cost = mean;
           if(std::min(area[a], area[b]) < small) // small segments go first, smallest first
-            mean = -1. + std::min(area[a], area[b]) / small;
-          if(mean < weakest)
+            cost = -1. + std::min(area[a], area[b]) / small;
+          else if(mean >= strength_limit)
+            continue;
+          if(cost < cheapest)
           {
-            weakest = mean;
+            cheapest = cost;
             wa = a;
             wb = b;
           }
         }
-    if(wa == s || weakest >= strength_limit)
+    if(wa == s)
       break; // no two live segments touch, or every boundary is strong enough
     // b joins a
     for(std::size_t c = 0; c < s; ++c)
