@@ -5,11 +5,15 @@
 // prints the area of each segment, and writes the mesh with one colour per
 // segment. Then asks for the spectral embedding alone, as a user who runs
 // their own clustering would, and scores the two results against each
-// other with the Rand index.
+// other with the Rand index. Last, on a weighted dual graph built once: the
+// thesis's method against the default (which over-segments and merges), a
+// merge done by hand, and the automatic choice of k.
 //
 // usage: k_way_segmentation [mesh.off] [k=6] [out.ply]
 #include <SpectralSeg/Clustering/Kmeans.h>
 #include <SpectralSeg/IO/write_colored_mesh.h>
+#include <SpectralSeg/Metrics/Part_aware_weight.h>
+#include <SpectralSeg/Refinement/merge_segments.h>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/k_way_segmentation.h>
 
@@ -64,5 +68,28 @@ int main(int argc, char** argv)
   std::cout << "embedding: " << embedding.coordinates.rows() << " x " << embedding.coordinates.cols()
             << (embedding.exact ? " (exact)" : " (Nystrom)") << "; plain K-means vs k_way_segmentation, Rand index error "
             << SpectralSeg::Evaluation::rand_index_error(clusters.labels, labels) << std::endl;
+
+  // The metric once, then several segmentations of the same weighted graph.
+  const SpectralSeg::Dual_graph graph = SpectralSeg::make_dual_graph(mesh);
+  const SpectralSeg::Weighted_dual_graph weighted(graph, SpectralSeg::Metrics::Part_aware_weight<>()(graph));
+  const SpectralSeg::Kernels::Exponential_kernel kernel;
+  const SpectralSeg::K_way_result ours = SpectralSeg::segment_k_way(weighted, k);
+  const SpectralSeg::K_way_result thesis =
+    SpectralSeg::segment_k_way(weighted, k, kernel, SpectralSeg::K_way_options::thesis());
+  std::cout << "default (k + " << SpectralSeg::K_way_options().extra_clusters << " clusters merged back to k): "
+            << ours.number_of_segments << " segments; thesis's method: " << thesis.number_of_segments
+            << " segments; Rand index error between them "
+            << SpectralSeg::Evaluation::rand_index_error(ours.labels, thesis.labels) << "\n";
+
+  // Merging by hand: the thesis's segments, merged down to 3 across the
+  // least concave boundaries.
+  std::vector<int> merged = thesis.labels;
+  const std::size_t left = SpectralSeg::Refinement::merge_weakest_boundaries(
+    graph, SpectralSeg::Refinement::concave_angle_weights(graph), merged, 3);
+  std::cout << "thesis's segments merged by hand: " << left << " segments\n";
+
+  // k chosen by the library, at most 12.
+  const SpectralSeg::K_way_result automatic = SpectralSeg::segment_k_way_automatic(weighted, 12);
+  std::cout << "automatic: " << automatic.number_of_segments << " segments" << std::endl;
   return 0;
 }
