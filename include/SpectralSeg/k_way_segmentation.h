@@ -140,23 +140,35 @@ inline void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t
   r.labels = r.clusters.labels;
   exec.report("k-means", 1.);
   lap("k-means");
+  // the proxies of the graph cut: the K-means centroids, or after a merge
+  // the mean embedding of each merged segment
+  Eigen::MatrixXd proxies = r.clusters.centroids;
+  if(k > k_final)
+  {
+    Refinement::make_segments_connected(graph.graph(), r.labels);
+    const std::size_t m =
+      Refinement::merge_weakest_boundaries(graph.graph(), Refinement::concave_angle_weights(graph.graph()), r.labels,
+                                           k_final, options.merge_strength_limit, options.merge_min_area_fraction);
+    proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), r.embedding.coordinates.cols());
+    std::vector<double> count(m, 0.);
+    for(std::size_t f = 0; f < r.labels.size(); ++f) // in face order: thread-independent
+    {
+      proxies.row(r.labels[f]) += r.embedding.coordinates.row(static_cast<Eigen::Index>(f));
+      count[std::size_t(r.labels[f])] += 1.;
+    }
+    for(std::size_t c = 0; c < m; ++c)
+      proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
+    lap("merge");
+  }
   if(options.boundary_enhancement)
   {
     exec.report("graph cut", 0.);
-    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, r.clusters.centroids, r.labels,
-                                     options.graph_cut);
+    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, proxies, r.labels, options.graph_cut);
     exec.report("graph cut", 1.);
     lap("graph cut");
   }
   r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
   lap("connected segments");
-  if(r.number_of_segments > k_final)
-  {
-    r.number_of_segments = Refinement::merge_weakest_boundaries(graph.graph(), Refinement::concave_angle_weights(graph.graph()),
-                                                                    r.labels, k_final, options.merge_strength_limit,
-                                                                    options.merge_min_area_fraction);
-    lap("merge");
-  }
 }
 
 } // namespace internal
@@ -172,11 +184,12 @@ inline void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t
 ///    (`options.embedding`);
 /// 2. K-means in the embedding into \f$m\f$ clusters, seeded with the
 ///    sample faces (Nyström) or by max-min (exact);
-/// 3. graph-cut boundary enhancement (optional);
-/// 4. every segment made one connected region (`Refinement::make_segments_connected()`);
-/// 5. if more than \f$k\f$ segments remain, the adjacent ones with the
-///    weakest (least concave) boundary are merged until \f$k\f$ are left
-///    (`Refinement::merge_weakest_boundaries()`).
+/// 3. if \f$m > k\f$: the clusters are made connected regions and the
+///    adjacent ones with the weakest (least concave) boundary are merged
+///    until \f$k\f$ are left (`Refinement::merge_weakest_boundaries()`);
+///    each merged segment's proxy is its mean in the embedding;
+/// 4. graph-cut boundary enhancement on the \f$k\f$ segments (optional);
+/// 5. every segment made one connected region (`Refinement::make_segments_connected()`).
 ///
 /// \tparam AffinityKernel a model of `AffinityKernel`
 /// \throws Invalid_input if `k` is 0 or larger than the number of faces
