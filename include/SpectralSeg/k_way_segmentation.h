@@ -140,24 +140,37 @@ inline void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t
   r.labels = r.clusters.labels;
   exec.report("k-means", 1.);
   lap("k-means");
-  // the proxies of the graph cut: the K-means centroids, or after a merge
-  // the mean embedding of each merged segment
+  // Over-segmented: merge first, then cut the k merged segments with their
+  // mean embedding as proxies. With several connected components the
+  // segments can outnumber the clusters (each component is at least one),
+  // and a graph cut on that many labels would crawl: there, cut the K-means
+  // clusters first and merge afterwards.
+  const auto merge = [&](std::vector<int>& labels) {
+    return Refinement::merge_weakest_boundaries(graph.graph(), Refinement::concave_angle_weights(graph.graph()), labels,
+                                                k_final, options.merge_strength_limit,
+                                                options.merge_min_area_fraction);
+  };
   Eigen::MatrixXd proxies = r.clusters.centroids;
+  bool merged = false;
   if(k > k_final)
   {
-    Refinement::make_segments_connected(graph.graph(), r.labels);
-    const std::size_t m =
-      Refinement::merge_weakest_boundaries(graph.graph(), Refinement::concave_angle_weights(graph.graph()), r.labels,
-                                           k_final, options.merge_strength_limit, options.merge_min_area_fraction);
-    proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), r.embedding.coordinates.cols());
-    std::vector<double> count(m, 0.);
-    for(std::size_t f = 0; f < r.labels.size(); ++f) // in face order: thread-independent
+    std::vector<int> labels = r.labels;
+    Refinement::make_segments_connected(graph.graph(), labels);
+    const std::size_t m = merge(labels);
+    if(m <= k)
     {
-      proxies.row(r.labels[f]) += r.embedding.coordinates.row(static_cast<Eigen::Index>(f));
-      count[std::size_t(r.labels[f])] += 1.;
+      proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), r.embedding.coordinates.cols());
+      std::vector<double> count(m, 0.);
+      for(std::size_t f = 0; f < labels.size(); ++f) // in face order: thread-independent
+      {
+        proxies.row(labels[f]) += r.embedding.coordinates.row(static_cast<Eigen::Index>(f));
+        count[std::size_t(labels[f])] += 1.;
+      }
+      for(std::size_t c = 0; c < m; ++c)
+        proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
+      r.labels = std::move(labels);
+      merged = true;
     }
-    for(std::size_t c = 0; c < m; ++c)
-      proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
     lap("merge");
   }
   if(options.boundary_enhancement)
@@ -169,6 +182,11 @@ inline void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t
   }
   r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
   lap("connected segments");
+  if(!merged && r.number_of_segments > k_final)
+  {
+    r.number_of_segments = merge(r.labels);
+    lap("merge");
+  }
 }
 
 } // namespace internal
@@ -190,6 +208,10 @@ inline void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t
 ///    each merged segment's proxy is its mean in the embedding;
 /// 4. graph-cut boundary enhancement on the \f$k\f$ segments (optional);
 /// 5. every segment made one connected region (`Refinement::make_segments_connected()`).
+///
+/// On a mesh with more connected components than \f$m\f$ the merge cannot
+/// bring the segments down to \f$m\f$ labels; there the graph cut runs on
+/// the \f$m\f$ K-means clusters and the merge comes last.
 ///
 /// \tparam AffinityKernel a model of `AffinityKernel`
 /// \throws Invalid_input if `k` is 0 or larger than the number of faces
