@@ -252,7 +252,7 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
 /// first that reach `threshold` times \f$\lambda_2\f$, adds one for the
 /// first, and clamps the result to \f$[2, k_{max}]\f$ (our rule; the
 /// thesis takes k from the user). `segment_k_way(graph, k)` with this k
-/// scores 0.189 on psb-dev, against 0.142 for `segment_k_way_automatic()`,
+/// scores 0.189 on psb-dev, against 0.143 for `segment_k_way_automatic()`,
 /// which is why the latter does not use it.
 inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding& e, std::size_t max_k,
                                              double threshold = 0.3)
@@ -281,7 +281,7 @@ inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding
 /// so that it does not depend on the mesh resolution: coarse meshes have
 /// larger dihedral angles everywhere.
 ///
-/// On psb-dev this scores 0.142 (Rand-index error), against 0.189 for the
+/// On psb-dev this scores 0.143 (Rand-index error), against 0.189 for the
 /// number of segments of `choose_number_of_segments()` and 0.116 for k-way
 /// with the humans' k; the default contrast 3 was chosen there (Embree ray
 /// casting, before the small-segment rule: 2: 0.157, 3: 0.138, 4: 0.140,
