@@ -139,6 +139,24 @@ TEST_CASE("segments merge across their weakest boundary first", "[k_way][merge]"
   CHECK(labels[11] == labels[10]);
   CHECK(labels[7] != labels[8]);
 
+  // a triangle soup: every face its own component, so every face its own
+  // segment; nothing can merge, and the bookkeeping stays sparse (a dense
+  // segment-by-segment table would need 2 x 20,000^2 doubles here)
+  test_meshes::Soup soup;
+  for(std::size_t t = 0; t < 20000; ++t)
+  {
+    const double x = double(t % 200) * 2., y = double(t / 200) * 2.;
+    soup.points.push_back({x, y, 0.});
+    soup.points.push_back({x + 1., y, 0.});
+    soup.points.push_back({x, y + 1., 0.});
+    soup.faces.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  const Dual_graph scattered = make_dual_graph(test_meshes::to_mesh<Mesh>(soup));
+  REQUIRE(scattered.number_of_components() == 20000);
+  std::vector<int> one(20000, 0);
+  CHECK(Refinement::make_segments_connected(scattered, one) == 20000);
+  CHECK(Refinement::merge_weakest_boundaries(scattered, std::vector<double>(), one, 2, 1., 0.5) == 20000);
+
   // concave folds are strong boundaries, convex ones are not
   const Dual_graph valley = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::fold(0.5, true)));
   const Dual_graph ridge = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::fold(0.5, false)));

@@ -124,7 +124,8 @@ private:
   std::chrono::steady_clock::time_point clock_;
 };
 
-// K-means, graph cut and connected segments on r.embedding.
+// K-means, merge (when over-segmented), graph cut and connected segments on
+// r.embedding: k clusters, k_final segments.
 inline void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final, const K_way_options& options,
                     K_way_result& r, Stage_timer& lap, const Execution& exec)
 {
@@ -145,9 +146,11 @@ inline void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t
   // segments can outnumber the clusters (each component is at least one),
   // and a graph cut on that many labels would crawl: there, cut the K-means
   // clusters first and merge afterwards.
+  std::vector<double> concave;
   const auto merge = [&](std::vector<int>& labels) {
-    return Refinement::merge_weakest_boundaries(graph.graph(), Refinement::concave_angle_weights(graph.graph()), labels,
-                                                k_final, options.merge_strength_limit,
+    if(concave.empty())
+      concave = Refinement::concave_angle_weights(graph.graph());
+    return Refinement::merge_weakest_boundaries(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
                                                 options.merge_min_area_fraction);
   };
   Eigen::MatrixXd proxies = r.clusters.centroids;

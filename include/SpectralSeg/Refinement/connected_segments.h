@@ -35,6 +35,7 @@ inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<
     std::vector<int> region(n, -1);
     std::vector<double> region_area;
     std::vector<int> region_label;
+    std::vector<std::vector<Dual_graph::size_type>> region_faces;
     std::vector<Dual_graph::size_type> stack;
     for(std::size_t s = 0; s < n; ++s)
     {
@@ -43,6 +44,7 @@ inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<
       const int r = static_cast<int>(region_area.size());
       region_area.push_back(0.);
       region_label.push_back(labels[s]);
+      region_faces.emplace_back();
       region[s] = r;
       stack.push_back(static_cast<Dual_graph::size_type>(s));
       while(!stack.empty())
@@ -50,6 +52,7 @@ inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<
         const auto f = stack.back();
         stack.pop_back();
         region_area[std::size_t(r)] += areas[f];
+        region_faces[std::size_t(r)].push_back(f);
         graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type) {
           if(region[g] < 0 && labels[g] == labels[f])
           {
@@ -80,12 +83,11 @@ inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<
     for(int isl : islands)
     {
       std::map<int, double> boundary; // neighbouring label -> shared edge length
-      for(std::size_t f = 0; f < n; ++f)
-        if(region[f] == isl)
-          graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f), [&](Dual_graph::size_type g, Dual_graph::size_type e) {
-            if(region[g] != isl)
-              boundary[labels[g]] += graph.edge(e).length;
-          });
+      for(const Dual_graph::size_type f : region_faces[std::size_t(isl)])
+        graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type e) {
+          if(region[g] != isl)
+            boundary[labels[g]] += graph.edge(e).length;
+        });
       int target = fresh;
       double longest = -1.;
       for(const auto& b : boundary)
@@ -94,11 +96,13 @@ inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<
           longest = b.second;
           target = b.first;
         }
-      if(target == fresh)
+      const bool isolated = target == fresh;
+      if(isolated)
         ++fresh; // an isolated component: its own segment
-      for(std::size_t f = 0; f < n; ++f)
-        if(region[f] == isl)
-          labels[f] = target;
+      for(const Dual_graph::size_type f : region_faces[std::size_t(isl)])
+        labels[f] = target;
+      if(isolated)
+        continue; // nothing else sees it: no need to recompute the regions
       merged = true;
       break; // regions changed: recompute
     }

@@ -59,23 +59,28 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
   for(int& l : labels)
     l = dense.emplace(l, int(dense.size())).first->second;
   const std::size_t s = dense.size();
-  // boundary length and length-weighted weight sum between each pair
-  std::vector<double> length(s * s, 0.), strength(s * s, 0.);
+  // per segment: neighbour -> (shared boundary length, length-weighted weight
+  // sum); sparse, since a mesh with many components has many segments
+  struct Boundary
+  {
+    double length = 0., strength = 0.;
+  };
+  std::vector<std::map<std::size_t, Boundary>> boundary(s);
   for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
   {
     const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
     const std::size_t a = std::size_t(labels[e.face[0]]), b = std::size_t(labels[e.face[1]]);
     if(a == b)
       continue;
-    length[a * s + b] += e.length;
-    length[b * s + a] += e.length;
-    strength[a * s + b] += e.length * weights[d];
-    strength[b * s + a] += e.length * weights[d];
+    for(Boundary* x : {&boundary[a][b], &boundary[b][a]})
+    {
+      x->length += e.length;
+      x->strength += e.length * weights[d];
+    }
   }
-  std::vector<int> target(s); // what each dense label became
+  std::vector<std::size_t> target(s); // what each dense label became
   for(std::size_t i = 0; i < s; ++i)
-    target[i] = int(i);
-  std::vector<char> alive(s, 1);
+    target[i] = i;
   std::vector<double> area(s, 0.);
   double total_area = 0.;
   for(std::size_t f = 0; f < n; ++f)
@@ -84,52 +89,52 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
     total_area += graph.geometry().areas[f];
   }
   const double small = min_area_fraction * total_area;
-  std::size_t count = s;
-  while(count > k)
+  for(std::size_t count = s; count > k; --count)
   {
     double cheapest = std::numeric_limits<double>::infinity();
     std::size_t wa = s, wb = s;
     for(std::size_t a = 0; a < s; ++a)
-      for(std::size_t b = a + 1; alive[a] && b < s; ++b)
-        if(alive[b] && length[a * s + b] > 0.)
+      for(const auto& nb : boundary[a]) // merged segments have no neighbours left
+      {
+        const std::size_t b = nb.first;
+        if(b < a || nb.second.length <= 0.)
+          continue;
+        const double mean = nb.second.strength / nb.second.length;
+        double cost = mean;
+        if(std::min(area[a], area[b]) < small) // small segments go first, smallest first
+          cost = -1. + std::min(area[a], area[b]) / small;
+        else if(mean >= strength_limit)
+          continue;
+        if(cost < cheapest)
         {
-          const double mean = strength[a * s + b] / length[a * s + b];
-          double cost = mean;
-          if(std::min(area[a], area[b]) < small) // small segments go first, smallest first
-            cost = -1. + std::min(area[a], area[b]) / small;
-          else if(mean >= strength_limit)
-            continue;
-          if(cost < cheapest)
-          {
-            cheapest = cost;
-            wa = a;
-            wb = b;
-          }
+          cheapest = cost;
+          wa = a;
+          wb = b;
         }
+      }
     if(wa == s)
-      break; // no two live segments touch, or every boundary is strong enough
-    // b joins a
-    for(std::size_t c = 0; c < s; ++c)
+      break; // no two segments touch, or every boundary is strong enough
+    // b joins a: b's boundaries become a's
+    boundary[wa].erase(wb);
+    for(const auto& nb : boundary[wb])
     {
-      if(c == wa || c == wb)
+      if(nb.first == wa)
         continue;
-      length[wa * s + c] += length[wb * s + c];
-      strength[wa * s + c] += strength[wb * s + c];
-      length[c * s + wa] = length[wa * s + c];
-      strength[c * s + wa] = strength[wa * s + c];
-      length[wb * s + c] = length[c * s + wb] = 0.;
+      Boundary& x = boundary[wa][nb.first];
+      x.length += nb.second.length;
+      x.strength += nb.second.strength;
+      boundary[nb.first].erase(wb);
+      boundary[nb.first][wa] = x;
     }
-    length[wa * s + wb] = length[wb * s + wa] = 0.;
-    alive[wb] = 0;
+    boundary[wb].clear();
     area[wa] += area[wb];
-    for(int& t : target)
-      if(t == int(wb))
-        t = int(wa);
-    --count;
+    for(std::size_t& t : target)
+      if(t == wb)
+        t = wa;
   }
   std::map<int, int> renumber;
   for(int& l : labels)
-    l = renumber.emplace(target[std::size_t(l)], int(renumber.size())).first->second;
+    l = renumber.emplace(int(target[std::size_t(l)]), int(renumber.size())).first->second;
   return renumber.size();
 }
 
