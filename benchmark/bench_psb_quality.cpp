@@ -31,8 +31,7 @@
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
-#include <SpectralSeg/Rendering/render_png.h>
-#include <array>
+#include <SpectralSeg/Rendering/render_mesh_geometry.h>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/k_way_segmentation.h>
 #ifdef SPECTRALSEG_HAS_EMBREE
@@ -259,24 +258,18 @@ void render_best_and_worst(const Options& o, std::vector<Row> rows)
       Mesh mesh;
       const auto report = SpectralSeg::IO::read_mesh_file((fs::path(o.dir) / "off" / (r.id + ".off")).string(), mesh);
       const SpectralSeg::Dual_graph g = SpectralSeg::make_dual_graph(mesh);
-      std::vector<std::array<double, 3>> points;
-      for(const auto& q : g.geometry().points)
-        points.push_back({q.x(), q.y(), q.z()});
-      std::vector<std::array<std::size_t, 3>> triangles;
-      for(const auto& t : g.geometry().triangles)
-        triangles.push_back({t[0], t[1], t[2]});
       SpectralSeg::Rendering::Render_options ro;
       ro.view_width = ro.view_height = 320;
       const std::string stem = m.first + "_" + pick.first + "_" + r.id;
-      SpectralSeg::Rendering::render_face_labels_png((fs::path(o.png_dir) / (stem + ".png")).string(), points, triangles,
+      SpectralSeg::Rendering::render_face_labels_png((fs::path(o.png_dir) / (stem + ".png")).string(), g.geometry(),
                                                      r.labels, ro);
       const std::vector<int> human_file = SpectralSeg::Evaluation::read_labels(
         (fs::path(o.dir) / "seg" / r.id / (r.id + "_0.seg")).string());
       std::vector<int> human(g.number_of_faces());
       for(std::size_t f = 0; f < human.size(); ++f)
         human[f] = human_file.at(report.input_face_of_face[f]);
-      SpectralSeg::Rendering::render_face_labels_png((fs::path(o.png_dir) / (stem + "_human.png")).string(), points,
-                                                     triangles, human, ro);
+      SpectralSeg::Rendering::render_face_labels_png((fs::path(o.png_dir) / (stem + "_human.png")).string(),
+                                                     g.geometry(), human, ro);
       std::printf("png: %s (%s, %s, RI error %.3f)\n", stem.c_str(), r.category.c_str(), m.first.c_str(), r.ri_error);
     }
   }

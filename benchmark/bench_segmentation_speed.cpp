@@ -52,6 +52,7 @@
 // reports (SpectralSeg::Execution), with the time of each report.
 #include "decimate.h"
 #include "subdivide.h"
+#include "timing.h"
 
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
@@ -83,10 +84,7 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+using spectralseg_bench::seconds_since;
 
 // Resets the peak resident set size of this process (Linux 4.0 and later),
 // after giving the freed heap back to the system.

@@ -8,13 +8,19 @@
 
 namespace spectralseg_bench {
 
+// Seconds elapsed since t0.
+inline double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 // Seconds taken by f().
 template <typename F>
 double seconds(const F& f)
 {
   const auto t0 = std::chrono::steady_clock::now();
   f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return seconds_since(t0);
 }
 
 } // namespace spectralseg_bench

@@ -178,6 +178,7 @@
 /// Everything lives in the namespace `SpectralSeg::Rendering`.
 ///
 /// Headers: `<SpectralSeg/Rendering/render_png.h>` (entry points),
+/// `<SpectralSeg/Rendering/render_mesh_geometry.h>` (the same for a `Mesh_geometry`),
 /// `<SpectralSeg/Rendering/Color_map.h>`, `<SpectralSeg/Rendering/Image.h>`,
 /// `<SpectralSeg/Rendering/Software_rasterizer.h>`,
 /// `<SpectralSeg/Rendering/write_png.h>`.

@@ -9,7 +9,7 @@
 // usage: part_aware_sampling [mesh.off] [samples=8] [out.png]
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
-#include <SpectralSeg/Rendering/render_png.h>
+#include <SpectralSeg/Rendering/render_mesh_geometry.h>
 #include <SpectralSeg/Sampling/farthest_point_samples.h>
 #include <SpectralSeg/dual_graph_distances.h>
 
@@ -49,13 +49,7 @@ int main(int argc, char** argv)
 
   // Picture: each face coloured by its nearest sample.
   std::vector<int> region(samples.nearest_sample.begin(), samples.nearest_sample.end());
-  std::vector<std::array<double, 3>> points;
-  for(const auto& p : graph.geometry().points)
-    points.push_back({p.x(), p.y(), p.z()});
-  std::vector<std::array<std::size_t, 3>> triangles;
-  for(const auto& t : graph.geometry().triangles)
-    triangles.push_back({t[0], t[1], t[2]});
-  SpectralSeg::Rendering::render_face_labels_png(png, points, triangles, region);
+  SpectralSeg::Rendering::render_face_labels_png(png, graph.geometry(), region);
   std::cout << "regions of the nearest sample: " << png << std::endl;
   return 0;
 }

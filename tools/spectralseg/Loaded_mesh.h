@@ -9,7 +9,6 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
-#include <SpectralSeg/Rendering/render_png.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -52,22 +51,6 @@ struct Loaded_mesh
       throw SpectralSeg::Invalid_input("face " + std::to_string(input_face) +
                                        " of the file was dropped (fewer than three distinct vertices)");
     return f;
-  }
-
-  std::vector<std::array<double, 3>> points() const
-  {
-    std::vector<std::array<double, 3>> p;
-    for(const auto& q : graph.geometry().points)
-      p.push_back({q.x(), q.y(), q.z()});
-    return p;
-  }
-
-  std::vector<std::array<std::size_t, 3>> triangles() const
-  {
-    std::vector<std::array<std::size_t, 3>> t;
-    for(const auto& f : graph.geometry().triangles)
-      t.push_back({f[0], f[1], f[2]});
-    return t;
   }
 };
 

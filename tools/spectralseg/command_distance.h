@@ -8,6 +8,7 @@
 #include "metric_choice.h"
 
 #include <SpectralSeg/IO/write_face_values.h>
+#include <SpectralSeg/Rendering/render_mesh_geometry.h>
 #include <SpectralSeg/dual_graph_distances.h>
 
 #include <CLI/CLI.hpp>
@@ -60,7 +61,7 @@ inline int run_distance(const Distance_options& o, Progress_printer& out)
   std::cout << "field: " << o.field << "\n";
   if(!o.png.empty())
   {
-    SpectralSeg::Rendering::render_face_field_png(o.png, m.points(), m.triangles(), d);
+    SpectralSeg::Rendering::render_face_field_png(o.png, m.graph.geometry(), d);
     std::cout << "png: " << o.png << "\n";
   }
   std::size_t unreachable = 0;

@@ -7,7 +7,7 @@
 #include "Loaded_mesh.h"
 
 #include <SpectralSeg/IO/write_colored_mesh.h>
-#include <SpectralSeg/Rendering/render_png.h>
+#include <SpectralSeg/Rendering/render_mesh_geometry.h>
 
 #include <CLI/CLI.hpp>
 
@@ -94,7 +94,7 @@ inline int run_render(const Render_command_options& o, const Progress_printer& o
   }
   if(!o.png.empty())
   {
-    SpectralSeg::Rendering::render_face_labels_png(o.png, m.points(), m.triangles(), labels, ro);
+    SpectralSeg::Rendering::render_face_labels_png(o.png, m.graph.geometry(), labels, ro);
     std::cout << "png: " << o.png << "\n";
   }
   return 0;

@@ -9,6 +9,7 @@
 
 #include <SpectralSeg/IO/write_colored_mesh.h>
 #include <SpectralSeg/IO/write_face_values.h>
+#include <SpectralSeg/Rendering/render_mesh_geometry.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/k_way_segmentation.h>
@@ -161,7 +162,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   }
   if(!o.png.empty())
   {
-    SpectralSeg::Rendering::render_face_labels_png(o.png, m.points(), m.triangles(), r.labels);
+    SpectralSeg::Rendering::render_face_labels_png(o.png, m.graph.geometry(), r.labels);
     std::cout << "png: " << o.png << "\n";
   }
   lap("write");
