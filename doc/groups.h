@@ -339,3 +339,44 @@ namespace IO {}
 namespace Rendering {}
 
 } // namespace SpectralSeg
+
+/// \defgroup PkgSpectralSegSegmentability Segmentability
+/// \ingroup PkgSpectralSegRef
+/// \brief The 2D contour analysis of the segmentability test of the
+/// automatic segmentation (thesis 6.2.3, 6.2.4 and 6.3.3): whether the
+/// outline of a 2D projection of a mesh piece is concave enough to cut it.
+///
+/// All of it works on plain 2D points and lives in the namespace
+/// `SpectralSeg::Segmentability`. The stages, in order:
+/// - `trace_outer_contour()`: draws the projected triangles on a raster and
+///   traces the outer boundary of the drawing;
+/// - `smooth_contour()`: removes the pixel staircase with truncated Fourier
+///   descriptors;
+/// - `simplify_contour()`: keeps the 50 most relevant vertices (discrete
+///   curve evolution), giving the contour \f$\zeta\f$;
+/// - `convexity()` and `segmentability_score()`: \f$S = 1 - C\f$, where
+///   the convexity \f$C\f$ combines an area ratio and a perimeter ratio;
+/// - `inner_distances()` and `multidimensional_scaling()`: the contour
+///   re-embedded by its inner distances, \f$\zeta^*\f$, whose score does
+///   not suffer from a bent shape;
+/// - `integrated_bending_scores()` and `bending_samples()`: two contour
+///   vertices on different parts, the seeds of the cut.
+///
+/// `analyse_contour()` runs the stages up to the scores in one call and
+/// returns every intermediate result (`Contour_analysis`).
+///
+/// Headers: `<SpectralSeg/Segmentability/Contour_analysis.h>` (all of the
+/// above), `<SpectralSeg/Segmentability/Contour.h>`,
+/// `<SpectralSeg/Segmentability/trace_outer_contour.h>`,
+/// `<SpectralSeg/Segmentability/smooth_contour.h>`,
+/// `<SpectralSeg/Segmentability/simplify_contour.h>`,
+/// `<SpectralSeg/Segmentability/convexity.h>`,
+/// `<SpectralSeg/Segmentability/inner_distances.h>`,
+/// `<SpectralSeg/Segmentability/multidimensional_scaling.h>`,
+/// `<SpectralSeg/Segmentability/integrated_bending_score.h>`.
+
+namespace SpectralSeg {
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief The 2D contour analysis of the segmentability test.
+namespace Segmentability {}
+} // namespace SpectralSeg
