@@ -46,7 +46,8 @@ public:
   /// face index type
   typedef Dual_graph::size_type size_type;
 
-  /// \param graph the dual graph (must outlive this object)
+  /// \param graph the dual graph
+  /// \pre `graph` outlives this object
   /// \param weights one finite, non-negative weight per dual edge
   /// \throws Invalid_input if the weights are not valid
   Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights)
