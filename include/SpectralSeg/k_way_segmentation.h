@@ -39,7 +39,7 @@ struct K_way_options
   std::size_t kmeans_iterations = 100;
   /// Nyström path: seed K-means with the first `k` sample faces (the
   /// thesis, 5.5); if false, with max-min seeds in the embedding, as the
-  /// exact path does (psb-dev: 0.131 against 0.129 with Embree ray casting)
+  /// exact path does
   bool seed_with_samples = true;
   /// over-segment and merge (our addition): the embedding and K-means use
   /// `k + extra_clusters` clusters, then the adjacent segments whose
@@ -48,9 +48,8 @@ struct K_way_options
   /// `Refinement::concave_angle_weights()`). K-means splits large bodies
   /// into pieces of similar spread and leaves small parts (fins, horns,
   /// fingers) unsplit; the extra clusters take those small parts and the
-  /// merge joins the body pieces across their smooth seams. On psb-dev the
-  /// default 3 lowers the Rand-index error from 0.132 to 0.116; 0 gives
-  /// the thesis's method (`thesis()`).
+  /// merge joins the body pieces across their smooth seams. 0 gives the
+  /// thesis's method (`thesis()`).
   std::size_t extra_clusters = 3;
   /// merging also stops when every boundary's mean concave angle (radians)
   /// is at least this
@@ -58,7 +57,7 @@ struct K_way_options
   /// segments smaller than this fraction of the mesh area are merged
   /// first, whatever their boundary: without it the sharp crease around an
   /// ear keeps the ear while the smooth hip joint merges the leg into the
-  /// body (psb-dev: no change, 0.115 against 0.116 with Embree)
+  /// body
   double merge_min_area_fraction = 0.005;
 
   /// the thesis's k-way method: K-means with exactly `k` clusters
@@ -254,9 +253,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
 /// contributes a large eigenvalue. The rule counts the eigenvalues after the
 /// first that reach `threshold` times \f$\lambda_2\f$, adds one for the
 /// first, and clamps the result to \f$[2, k_{max}]\f$ (our rule; the
-/// thesis takes k from the user). `segment_k_way(graph, k)` with this k
-/// scores 0.189 on psb-dev, against 0.143 for `segment_k_way_automatic()`,
-/// which is why the latter does not use it.
+/// thesis takes k from the user). `segment_k_way_automatic()` does not use
+/// it (doc/benchmarks.md compares the two).
 inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding& e, std::size_t max_k,
                                              double threshold = 0.3)
 {
@@ -284,14 +282,10 @@ inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding
 /// so that it does not depend on the mesh resolution: coarse meshes have
 /// larger dihedral angles everywhere.
 ///
-/// On psb-dev this scores 0.143 (Rand-index error), against 0.189 for the
-/// number of segments of `choose_number_of_segments()` and 0.116 for k-way
-/// with the humans' k; the default contrast 3 was chosen there (Embree ray
-/// casting, before the small-segment rule: 2: 0.157, 3: 0.138, 4: 0.140,
-/// 6: 0.216). Segments under `options.merge_min_area_fraction` of the area
-/// are merged whatever their boundary, as in `segment_k_way()`. An absolute limit of 0.07 radians
-/// scores 0.124 on psb-dev, whose meshes all have 8k to 50k faces, but
-/// over-segments coarse meshes (19 segments on the 5,558-face elephant).
+/// Segments under `options.merge_min_area_fraction` of the area are merged
+/// whatever their boundary, as in `segment_k_way()`. The default contrast
+/// and the choice of a relative limit are explained, with their scores, in
+/// doc/benchmarks.md.
 ///
 /// `options.extra_clusters` and `options.merge_strength_limit` are replaced
 /// by the rule's values; the other options apply as in `segment_k_way()`.
