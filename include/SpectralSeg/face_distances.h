@@ -74,16 +74,35 @@ auto metric_from(const NamedParameters& np)
 /// \param sources the source faces (at least one)
 /// \param distances receives each face's distance; `+infinity` for a face in
 ///        a connected component without a source
-/// \param np optional named parameters among:
-///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Part_aware_weight<>()`, the part-aware metric
-///     (geodesic, angular and VSI blended; components normalised by their 99th percentile)
-///   - `nearest_source_map`: a writable property map from faces to
-///     `std::size_t`, receiving the position in `sources` of each face's
-///     nearest source (`Nearest_source_distances::unreachable` if none)
-///   - `number_of_threads`: threads for the metric (default 0, all)
-///   - `progress_callback`: a `Progress_callback` (default none)
-///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`: as for
-///     `extract_mesh_geometry()`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{metric}
+///     \cgalParamDescription{the weights of the dual edges (thesis, ch. 3)}
+///     \cgalParamType{a model of `DualEdgeWeight`}
+///     \cgalParamDefault{`Metrics::Part_aware_weight<>()`, the part-aware metric (thesis 3.5)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{nearest_source_map}
+///     \cgalParamDescription{receives, for each face, the position in `sources` of its nearest source (`Nearest_source_distances::unreachable` if none); ties go to the source Dijkstra settles first}
+///     \cgalParamType{a model of `WritablePropertyMap` with the face descriptor as key type and `std::size_t` as value type}
+///     \cgalParamDefault{not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads of the parallel stages; 0 means all hardware threads. The result does not depend on it}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called with each stage's name and done fraction; returning `false` cancels (`Operation_cancelled`)}
+///     \cgalParamType{`SpectralSeg::Progress_callback`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}
+///     \cgalParamDescription{the vertex positions and the numbering of vertices and faces, as for `extract_mesh_geometry()`}
+///     \cgalParamType{property maps as for `extract_mesh_geometry()`}
+///     \cgalParamDefault{the mesh's internal maps}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_input for a non-triangle face, a non-finite coordinate,
 ///         an empty source range or a metric that returns invalid weights
@@ -128,7 +147,8 @@ void face_distances(const TriangleMesh& tm, const FaceRange& sources, FaceDistan
 }
 
 /// \ingroup PkgSpectralSegDistances
-/// \brief Single-source version of `face_distances()`: distances from `source`.
+/// \brief Single-source version of `face_distances()`: distances from
+/// `source`, with the same named parameters.
 template <typename TriangleMesh, typename FaceDistanceMap,
           typename NamedParameters = parameters::Default_named_parameters>
 void face_distances(const TriangleMesh& tm,
