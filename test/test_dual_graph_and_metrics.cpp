@@ -9,7 +9,7 @@
 #include <SpectralSeg/Metrics/Blend.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
 #include <SpectralSeg/Metrics/Per_edge_weight.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/face_distances.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

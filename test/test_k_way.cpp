@@ -53,7 +53,7 @@ TEST_CASE("k-way finds the body and the four limbs of a star", "[k_way]")
   for(Embedding::Method m : {Embedding::Method::exact, Embedding::Method::nystrom})
   {
     INFO("method " << int(m));
-    const K_way_result r = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), with_method(m));
+    const K_way_result r = segment_k_way(s.weighted, 5, with_method(m));
     CHECK(r.number_of_segments == 5);
     CHECK(r.embedding.exact == (m == Embedding::Method::exact));
     CHECK(r.clusters.centroids.rows() == Eigen::Index(5 + K_way_options().extra_clusters));
@@ -61,7 +61,7 @@ TEST_CASE("k-way finds the body and the four limbs of a star", "[k_way]")
     // the thesis's method: K-means with exactly k clusters, no merging
     K_way_options thesis = K_way_options::thesis();
     thesis.embedding.method = m;
-    const K_way_result t = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), thesis);
+    const K_way_result t = segment_k_way(s.weighted, 5, thesis);
     CHECK(t.number_of_segments == 5);
     CHECK(t.clusters.centroids.rows() == 5);
     CHECK(Evaluation::rand_index_error(t.labels, s.soup.face_part) < 0.05);
@@ -79,10 +79,13 @@ TEST_CASE("automatic k-way finds the five parts of the star by itself", "[k_way]
   CHECK(r.number_of_segments <= 6);
   CHECK(Evaluation::rand_index_error(r.labels, s.soup.face_part) < 0.05);
   // a huge merge limit merges down to the minimum of 2 segments
-  const K_way_result two = segment_k_way_automatic(s.weighted, 20, Kernels::Exponential_kernel(), K_way_options(),
-                                                   Execution(), 1e6);
+  K_way_automatic_options merge_all;
+  merge_all.min_boundary_contrast = 1e6;
+  const K_way_result two = segment_k_way_automatic(s.weighted, merge_all);
   CHECK(two.number_of_segments == 2);
-  CHECK_THROWS_AS(segment_k_way_automatic(s.weighted, 1), Invalid_input);
+  K_way_automatic_options one;
+  one.max_k = 1;
+  CHECK_THROWS_AS(segment_k_way_automatic(s.weighted, one), Invalid_input);
 }
 
 TEST_CASE("segments merge across their weakest boundary first", "[k_way][merge]")
@@ -170,11 +173,11 @@ TEST_CASE("segments merge across their weakest boundary first", "[k_way][merge]"
 TEST_CASE("exact and Nyström embeddings give the same segmentation", "[k_way][nystrom]")
 {
   const Star& s = star();
-  const K_way_result exact = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), with_method(Embedding::Method::exact));
-  const K_way_result nystrom = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), with_method(Embedding::Method::nystrom));
+  const K_way_result exact = segment_k_way(s.weighted, 5, with_method(Embedding::Method::exact));
+  const K_way_result nystrom = segment_k_way(s.weighted, 5, with_method(Embedding::Method::nystrom));
   CHECK(Evaluation::rand_index_error(exact.labels, nystrom.labels) < 0.03);
   // the Gaussian kernel finds the parts too
-  const K_way_result gaussian = segment_k_way(s.weighted, 5, Kernels::Gaussian_kernel(), with_method(Embedding::Method::nystrom));
+  const K_way_result gaussian = segment_k_way(s.weighted, 5, with_method(Embedding::Method::nystrom).with_kernel(Kernels::Gaussian_kernel()));
   CHECK(Evaluation::rand_index_error(gaussian.labels, s.soup.face_part) < 0.05);
 }
 
@@ -213,9 +216,9 @@ TEST_CASE("k-way labels do not depend on the number of threads", "[k_way][thread
   const Star& s = star();
   for(Embedding::Method m : {Embedding::Method::exact, Embedding::Method::nystrom})
   {
-    const K_way_result r1 = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), with_method(m), Execution(1));
-    const K_way_result r2 = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), with_method(m), Execution(2));
-    const K_way_result r3 = segment_k_way(s.weighted, 5, Kernels::Exponential_kernel(), with_method(m), Execution(3));
+    const K_way_result r1 = segment_k_way(s.weighted, 5, with_method(m), Execution(1));
+    const K_way_result r2 = segment_k_way(s.weighted, 5, with_method(m), Execution(2));
+    const K_way_result r3 = segment_k_way(s.weighted, 5, with_method(m), Execution(3));
     CHECK(r1.labels == r2.labels);
     CHECK(r1.labels == r3.labels);
   }

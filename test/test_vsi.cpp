@@ -8,7 +8,7 @@
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Metrics/VSI_weight.h>
 #include <SpectralSeg/Ray_casting/AABB_ray_caster.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

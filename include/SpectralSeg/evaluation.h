@@ -9,7 +9,7 @@
 #define SPECTRALSEG_EVALUATION_H
 
 #include <SpectralSeg/Dual_graph.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <algorithm>

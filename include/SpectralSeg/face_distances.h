@@ -8,7 +8,8 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
+#include <SpectralSeg/internal/mesh_parameters.h>
 #include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -20,44 +21,6 @@
 #include <vector>
 
 namespace SpectralSeg {
-
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-struct No_nearest_source_map {};
-
-template <typename NamedParameters>
-Execution execution_from(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const unsigned threads = static_cast<unsigned>(
-    choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_threads), 0));
-  Progress_callback progress =
-    choose_parameter(get_parameter(np, SpectralSeg::internal_np::progress_callback), Progress_callback());
-  return Execution(threads, progress);
-}
-
-template <typename Metric>
-std::vector<double> metric_weights(const Metric& metric, const Dual_graph& graph, const Execution& exec)
-{
-  exec.report(metric.name() + " weights", 0.);
-  std::vector<double> w = metric(graph, exec);
-  Metrics::check_weights(graph, w, metric.name());
-  exec.report(metric.name() + " weights", 1.);
-  return w;
-}
-
-template <typename NamedParameters>
-auto metric_from(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return choose_parameter(get_parameter(np, SpectralSeg::internal_np::metric), Metrics::Part_aware_weight<>());
-}
-
-} // namespace internal
-/// \endcond
 
 /// \ingroup PkgSpectralSegDistances
 /// \brief Computes the shortest-path distance, in the weighted dual graph,
@@ -121,12 +84,10 @@ void face_distances(const TriangleMesh& tm, const FaceRange& sources, FaceDistan
   using CGAL::parameters::get_parameter;
   typedef boost::graph_traits<TriangleMesh> GT;
 
-  const Execution exec = internal::execution_from(np);
-  const auto metric = internal::metric_from(np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-
-  const Dual_graph graph = make_dual_graph(tm, np);
-  const Weighted_dual_graph weighted(graph, internal::metric_weights(metric, graph, exec));
+  const internal::Weighted_mesh_graph g(tm, np);
+  const Execution& exec = g.exec;
+  const Weighted_dual_graph& weighted = g.weighted;
 
   std::vector<Dual_graph::size_type> source_ids;
   for(typename GT::face_descriptor f : sources)

@@ -29,7 +29,9 @@ namespace internal_np {
   P(number_of_nystrom_samples_t, number_of_nystrom_samples) \
   P(sampling_method_t, sampling_method) \
   P(boundary_enhancement_t, boundary_enhancement) \
-  P(k_way_options_t, k_way_options)
+  P(k_way_options_t, k_way_options) \
+  P(max_number_of_segments_t, max_number_of_segments) \
+  P(min_boundary_contrast_t, min_boundary_contrast)
 
 #define SPECTRALSEG_DECLARE_TAG(X, Y) enum X { Y };
 SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_DECLARE_TAG)
