@@ -264,3 +264,49 @@ TEST_CASE("islands are merged into the neighbour with the longest shared boundar
   CHECK(labels[5] == 0);
   CHECK(labels[11] == 1);
 }
+
+TEST_CASE("kmeans separates two blobs from max-min seeds", "[kmeans]")
+{
+  Eigen::MatrixXd points(6, 2);
+  points << 0., 0., 0.2, 0., 0., 0.2, 10., 10., 10.2, 10., 10., 10.2;
+  const Clustering::Kmeans_result r = Clustering::kmeans(points, 2);
+  REQUIRE(r.labels.size() == 6);
+  CHECK(r.converged);
+  CHECK(r.labels[0] == r.labels[1]);
+  CHECK(r.labels[0] == r.labels[2]);
+  CHECK(r.labels[3] == r.labels[4]);
+  CHECK(r.labels[3] == r.labels[5]);
+  CHECK(r.labels[0] != r.labels[3]);
+  const Eigen::Index far = r.labels[3];
+  CHECK(r.centroids(far, 0) == Approx(10.2 / 3. + 20. / 3.));
+  CHECK(r.centroids(far, 1) == Approx(10.2 / 3. + 20. / 3.));
+  // given seeds are used as they are: the clusters keep the seeds' order
+  const Clustering::Kmeans_result s = Clustering::kmeans(points, 2, {4, 0});
+  CHECK(s.labels[4] == 0);
+  CHECK(s.labels[0] == 1);
+  CHECK_THROWS_AS(Clustering::kmeans(points, 7), Invalid_input);
+}
+
+TEST_CASE("graph_cut_boundaries moves labels to the nearest proxy along a strip", "[graphcut]")
+{
+  const Mesh mesh = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(20));
+  const Dual_graph graph = make_dual_graph(mesh);
+  const std::size_t n = graph.number_of_faces();
+  Eigen::MatrixXd embedding(static_cast<Eigen::Index>(n), 1);
+  for(std::size_t f = 0; f < n; ++f)
+    embedding(static_cast<Eigen::Index>(f), 0) = graph.geometry().centroids[f].x();
+  Eigen::MatrixXd proxies(2, 1);
+  proxies << 0., 20.;
+  std::vector<int> labels(n, 0); // everything starts in segment 0
+  Refinement::graph_cut_boundaries(graph, embedding, proxies, labels);
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    const double x = embedding(static_cast<Eigen::Index>(f), 0);
+    if(x < 8.)
+      CHECK(labels[f] == 0);
+    if(x > 12.)
+      CHECK(labels[f] == 1);
+  }
+  std::vector<int> bad(n - 1, 0);
+  CHECK_THROWS_AS(Refinement::graph_cut_boundaries(graph, embedding, proxies, bad), Invalid_input);
+}
