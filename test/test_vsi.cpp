@@ -161,17 +161,17 @@ TEST_CASE("image_difference: robust mean of squared reach differences", "[vsi][d
 {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const std::vector<float> a = {1.f, 2.f, 3.f, 4.f};
-  CHECK(VSI::image_difference(a.data(), a.data(), a.size()) == 0.);
+  CHECK(Metrics::VSI::image_difference(a.data(), a.data(), a.size()) == 0.);
   // equal differences: their plain mean; a pair missing in one image is ignored
   const std::vector<float> b = {2.f, 3.f, nan, 5.f};
-  CHECK(VSI::image_difference(a.data(), b.data(), a.size()) == Approx(1.));
+  CHECK(Metrics::VSI::image_difference(a.data(), b.data(), a.size()) == Approx(1.));
   // one outlier (d = 100 >= mean + 2 sd) is dropped: 1, not the plain mean 10.9
   const std::vector<float> zero(10, 0.f);
   std::vector<float> one(10, 1.f);
   one[9] = 10.f;
-  CHECK(VSI::image_difference(zero.data(), one.data(), zero.size()) == Approx(1.));
+  CHECK(Metrics::VSI::image_difference(zero.data(), one.data(), zero.size()) == Approx(1.));
   const std::vector<float> none(4, nan);
-  CHECK(std::isnan(VSI::image_difference(a.data(), none.data(), a.size())));
+  CHECK(std::isnan(Metrics::VSI::image_difference(a.data(), none.data(), a.size())));
 }
 
 TEST_CASE("vsi_edge_weights: image differences, unmeasured edges filled from neighbours", "[vsi][weights]")
@@ -179,7 +179,7 @@ TEST_CASE("vsi_edge_weights: image differences, unmeasured edges filled from nei
   const Mesh mesh = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(3));
   const Dual_graph graph = make_dual_graph(mesh);
   const std::size_t n = graph.number_of_faces();
-  VSI::Shape_images images;
+  Metrics::VSI::Shape_images images;
   images.reaches.resize(static_cast<Eigen::Index>(n), 3);
   for(std::size_t f = 0; f < n; ++f)
     images.reaches.row(static_cast<Eigen::Index>(f)).setConstant(float(f));
