@@ -13,7 +13,7 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -210,14 +210,18 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
     const auto e = SpectralSeg::internal::embed(wg, std::min<std::size_t>(o.auto_k, g.number_of_faces() - 1),
                                                 SpectralSeg::Kernels::Exponential_kernel(), ko.embedding, exec);
     const std::size_t chosen = SpectralSeg::choose_number_of_segments(e, o.auto_k, o.auto_spectrum);
-    return SpectralSeg::segment_k_way(wg, chosen, SpectralSeg::Kernels::Exponential_kernel(), ko, exec).labels;
+    return SpectralSeg::segment_k_way(wg, chosen, ko, exec).labels;
   }
   if(o.auto_k > 0)
-    return SpectralSeg::segment_k_way_automatic(wg, o.auto_k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec,
-                                                o.auto_contrast)
-      .labels;
-  const auto r = o.kernel == "gaussian" ? SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Gaussian_kernel(), ko, exec)
-                                        : SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Exponential_kernel(), ko, exec);
+  {
+    SpectralSeg::K_way_automatic_options automatic;
+    automatic.k_way = ko;
+    automatic.max_k = o.auto_k;
+    automatic.min_boundary_contrast = o.auto_contrast;
+    return SpectralSeg::segment_k_way_automatic(wg, automatic, exec).labels;
+  }
+  const auto r = o.kernel == "gaussian" ? SpectralSeg::segment_k_way(wg, k, ko.with_kernel(SpectralSeg::Kernels::Gaussian_kernel()), exec)
+                                        : SpectralSeg::segment_k_way(wg, k, ko, exec);
   return r.labels;
 }
 

@@ -192,8 +192,7 @@ Run run_spectralseg(const Mesh& mesh, std::size_t k, unsigned threads, bool trac
   const std::vector<double> w = SpectralSeg::Metrics::Part_aware_weight<RayCaster>()(g, exec);
   const SpectralSeg::Weighted_dual_graph wg(g, w);
   const double t1 = clock.now();
-  const SpectralSeg::K_way_result kr = SpectralSeg::segment_k_way(wg, k, SpectralSeg::Kernels::Exponential_kernel(),
-                                                                  SpectralSeg::K_way_options(), exec);
+  const SpectralSeg::K_way_result kr = SpectralSeg::segment_k_way(wg, k, SpectralSeg::K_way_options(), exec);
   const double t2 = clock.now();
   r.segments = kr.number_of_segments;
   r.metric = t1 - t0;

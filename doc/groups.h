@@ -68,7 +68,7 @@
 /// parallel (`Weighted_dual_graph::distance_rows()`).
 ///
 /// Headers: `<SpectralSeg/face_distances.h>`,
-/// `<SpectralSeg/dual_graph_distances.h>`.
+/// `<SpectralSeg/Weighted_dual_graph.h>`.
 
 /// \defgroup PkgSpectralSegIO Reading meshes, writing per-face values
 /// \ingroup PkgSpectralSegRef
@@ -152,12 +152,21 @@
 ///     <td>whether the K-means labels are refined by the graph cut</td>
 ///     <td>`true`</td>
 ///     <td>`k_way_segmentation()`</td></tr>
-/// <tr><td>`k_way_options`</td><td>`K_way_options` (the whole set of
-///         k-way options)</td>
-///     <td>starting values of all k-way options; the parameters above
-///         override the fields they name</td>
+/// <tr><td>`k_way_options`</td><td>`Basic_K_way_options` (the whole set of
+///         k-way options, the kernel included)</td>
+///     <td>every k-way option; an individual parameter above, when
+///         given, replaces the field it names</td>
 ///     <td>`K_way_options()`</td>
 ///     <td>`k_way_segmentation()`, `spectral_embedding()`</td></tr>
+/// <tr><td>`max_number_of_segments`</td><td>`std::size_t`</td>
+///     <td>the largest number of segments considered</td>
+///     <td>20</td>
+///     <td>`k_way_segmentation_automatic()`</td></tr>
+/// <tr><td>`min_boundary_contrast`</td><td>`double`</td>
+///     <td>merging stops once the weakest boundary's mean concave angle
+///         reaches this many times the mesh's mean concave angle</td>
+///     <td>3</td>
+///     <td>`k_way_segmentation_automatic()`</td></tr>
 /// </table>
 ///
 /// The CGAL parameters read by SpectralSeg's functions are
@@ -227,9 +236,11 @@
 /// \brief Segmentation of a mesh into a given number of parts by spectral
 /// clustering.
 ///
-/// `k_way_segmentation()` is the one-call entry point on a mesh;
-/// `segment_k_way()` works on a `Weighted_dual_graph` and returns every
-/// intermediate result (`K_way_result`); `spectral_embedding()` stops after
+/// `k_way_segmentation()` and `k_way_segmentation_automatic()` are the
+/// entry points on a mesh, with named parameters; `segment_k_way()` and
+/// `segment_k_way_automatic()` work on a `Weighted_dual_graph` with one
+/// options struct (`K_way_options`, `K_way_automatic_options`) and return
+/// every intermediate result (`K_way_result`); `spectral_embedding()` stops after
 /// the embedding, for users who cluster the faces themselves. The stages are
 /// documented in \ref PkgSpectralSegKernels, \ref PkgSpectralSegEmbedding,
 /// \ref PkgSpectralSegClustering and \ref PkgSpectralSegRefinement.

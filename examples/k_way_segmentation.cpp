@@ -72,10 +72,9 @@ int main(int argc, char** argv)
   // The metric once, then several segmentations of the same weighted graph.
   const SpectralSeg::Dual_graph graph = SpectralSeg::make_dual_graph(mesh);
   const SpectralSeg::Weighted_dual_graph weighted(graph, SpectralSeg::Metrics::Part_aware_weight<>()(graph));
-  const SpectralSeg::Kernels::Exponential_kernel kernel;
   const SpectralSeg::K_way_result ours = SpectralSeg::segment_k_way(weighted, k);
   const SpectralSeg::K_way_result thesis =
-    SpectralSeg::segment_k_way(weighted, k, kernel, SpectralSeg::K_way_options::thesis());
+    SpectralSeg::segment_k_way(weighted, k, SpectralSeg::K_way_options::thesis());
   std::cout << "default (k + " << SpectralSeg::K_way_options().extra_clusters << " clusters merged back to k): "
             << ours.number_of_segments << " segments; thesis's method: " << thesis.number_of_segments
             << " segments; Rand index error between them "
@@ -89,7 +88,9 @@ int main(int argc, char** argv)
   std::cout << "thesis's segments merged by hand: " << left << " segments\n";
 
   // k chosen by the library, at most 12.
-  const SpectralSeg::K_way_result automatic = SpectralSeg::segment_k_way_automatic(weighted, 12);
+  SpectralSeg::K_way_automatic_options automatic_options;
+  automatic_options.max_k = 12;
+  const SpectralSeg::K_way_result automatic = SpectralSeg::segment_k_way_automatic(weighted, automatic_options);
   std::cout << "automatic: " << automatic.number_of_segments << " segments" << std::endl;
   return 0;
 }

@@ -11,7 +11,7 @@
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Rendering/render_mesh_geometry.h>
 #include <SpectralSeg/Sampling/farthest_point_samples.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -4,12 +4,14 @@
 #include "test_meshes.h"
 
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/IO/write_colored_mesh.h>
+#include <SpectralSeg/Metrics/normalize_weights.h>
 #include <SpectralSeg/Metrics/Angular_weight.h>
 #include <SpectralSeg/Metrics/Any_weight.h>
 #include <SpectralSeg/Metrics/Blend.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
 #include <SpectralSeg/Metrics/Per_edge_weight.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/face_distances.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -17,7 +19,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 
 namespace {
@@ -309,4 +314,56 @@ TEST_CASE("farthest point sampling spreads samples along a strip", "[sampling]")
   std::sort(sorted.begin(), sorted.end());
   CHECK(std::unique(sorted.begin(), sorted.end()) == sorted.end());
   CHECK(sorted.size() == n);
+}
+
+TEST_CASE("quantile normalisation divides by the quantile and clamps at 1", "[metrics][normalization]")
+{
+  std::vector<double> w = {0., 1., 2., 3., 100.};
+  Metrics::normalize_weights(w, Metrics::Normalization::quantile(0.5)); // the median, 2
+  CHECK(w == std::vector<double>({0., 0.5, 1., 1., 1.}));
+  std::vector<double> m = {0., 1., 2., 3., 100.};
+  Metrics::normalize_weights(m, Metrics::Normalization::maximum());
+  CHECK(m[4] == 1.);
+  CHECK(m[1] == Approx(0.01));
+  // a zero quantile falls back to the maximum
+  std::vector<double> z = {0., 0., 0., 5.};
+  Metrics::normalize_weights(z, Metrics::Normalization::quantile(0.5));
+  CHECK(z == std::vector<double>({0., 0., 0., 1.}));
+  CHECK_THROWS_AS(Metrics::Normalization::quantile(0.), Invalid_input);
+}
+
+TEST_CASE("write_colored_mesh writes one colour per face in PLY and OFF", "[io][colored]")
+{
+  const Mesh mesh = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(2));
+  const Mesh_geometry g = extract_mesh_geometry(mesh);
+  std::vector<Rendering::Rgb> colors(g.number_of_faces(), Rendering::Rgb{10, 20, 30});
+  colors[3] = Rendering::Rgb{255, 0, 7};
+  const std::string dir = std::filesystem::temp_directory_path().string();
+  const auto read = [](const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::string> lines;
+    for(std::string l; std::getline(in, l);)
+      lines.push_back(l);
+    return lines;
+  };
+  const std::string ply = dir + "/spectralseg_colored_test.ply";
+  IO::write_colored_mesh(ply, g, colors);
+  const std::vector<std::string> p = read(ply);
+  REQUIRE(p.size() == 13 + g.number_of_vertices() + g.number_of_faces());
+  CHECK(p[0] == "ply");
+  CHECK(std::find(p.begin(), p.end(), "element face 4") != p.end());
+  const auto& t = g.triangles[3];
+  CHECK(p.back() == "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]) + " 255 0 7");
+  CHECK(p[p.size() - 2].substr(p[p.size() - 2].size() - 9) == " 10 20 30");
+  const std::string off = dir + "/spectralseg_colored_test.OFF";
+  IO::write_colored_mesh(off, g, colors);
+  const std::vector<std::string> o = read(off);
+  REQUIRE(o.size() == 2 + g.number_of_vertices() + g.number_of_faces());
+  CHECK(o[1] == "6 4 0");
+  CHECK(o.back() == p.back());
+  CHECK_THROWS_AS(IO::write_colored_mesh(dir + "/spectralseg_colored_test.stl", g, colors), Io_error);
+  colors.pop_back();
+  CHECK_THROWS_AS(IO::write_colored_mesh(ply, g, colors), Invalid_input);
+  std::filesystem::remove(ply);
+  std::filesystem::remove(off);
 }

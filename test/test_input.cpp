@@ -7,7 +7,7 @@
 #include <SpectralSeg/Metrics/Angular_weight.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -331,23 +331,23 @@ TEST_CASE("mismatched sizes and bad indices throw", "[rendering][errors]")
   const Points points{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
   const Triangles triangles{{0, 1, 2}};
   const std::string path = unique_temp_path("never_written").string();
-  CHECK_THROWS_AS(render_face_colors(points, triangles, {}), std::invalid_argument);
-  CHECK_THROWS_AS(render_face_colors(points, triangles, {red, blue}), std::invalid_argument);
-  CHECK_THROWS_AS(render_face_colors(points, {{0, 1, 3}}, {red}), std::invalid_argument);
+  CHECK_THROWS_AS(render_face_colors(points, triangles, {}), SpectralSeg::Invalid_input);
+  CHECK_THROWS_AS(render_face_colors(points, triangles, {red, blue}), SpectralSeg::Invalid_input);
+  CHECK_THROWS_AS(render_face_colors(points, {{0, 1, 3}}, {red}), SpectralSeg::Invalid_input);
   CHECK_THROWS_AS(render_face_field_png(path, points, triangles, {1.0, 2.0}),
-                  std::invalid_argument);
-  CHECK_THROWS_AS(render_face_labels_png(path, points, triangles, {}), std::invalid_argument);
-  CHECK_THROWS_AS(render_face_labels_png(path, points, {{7, 1, 2}}, {0}), std::invalid_argument);
+                  SpectralSeg::Invalid_input);
+  CHECK_THROWS_AS(render_face_labels_png(path, points, triangles, {}), SpectralSeg::Invalid_input);
+  CHECK_THROWS_AS(render_face_labels_png(path, points, {{7, 1, 2}}, {0}), SpectralSeg::Invalid_input);
   CHECK_THROWS_AS(Software_rasterizer(16, 16).render(points, triangles, {red, red},
                                                      front_direction, y_up),
-                  std::invalid_argument);
+                  SpectralSeg::Invalid_input);
   CHECK_THROWS_AS(Software_rasterizer(16, 16).render(points, triangles, {red},
                                                      {0.0, 0.0, 0.0}, y_up),
-                  std::invalid_argument);
-  CHECK_THROWS_AS(Software_rasterizer(0, 16), std::invalid_argument);
+                  SpectralSeg::Invalid_input);
+  CHECK_THROWS_AS(Software_rasterizer(0, 16), SpectralSeg::Invalid_input);
   Render_options no_views;
   no_views.views.clear();
-  CHECK_THROWS_AS(render_face_colors(points, triangles, {red}, no_views), std::invalid_argument);
+  CHECK_THROWS_AS(render_face_colors(points, triangles, {red}, no_views), SpectralSeg::Invalid_input);
   CHECK_FALSE(std::filesystem::exists(path));
 }
 
@@ -397,9 +397,9 @@ TEST_CASE("write_png reports unwritable paths", "[rendering][png]")
     write_png(path, Image(4, 4));
     FAIL("write_png should have thrown");
   }
-  catch(const std::runtime_error& e)
+  catch(const SpectralSeg::Io_error& e)
   {
     CHECK(std::string(e.what()).find(path) != std::string::npos);
   }
-  CHECK_THROWS_AS(write_png(unique_temp_path("empty").string(), Image()), std::invalid_argument);
+  CHECK_THROWS_AS(write_png(unique_temp_path("empty").string(), Image()), SpectralSeg::Invalid_input);
 }

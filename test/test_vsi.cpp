@@ -8,7 +8,7 @@
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Metrics/VSI_weight.h>
 #include <SpectralSeg/Ray_casting/AABB_ray_caster.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -16,6 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -154,4 +155,51 @@ TEST_CASE("open meshes: rays that escape are ignored, no NaN reaches a weight", 
   const std::vector<double> d = Weighted_dual_graph(g, pa).distances(0);
   for(double v : d)
     CHECK(std::isfinite(v));
+}
+
+TEST_CASE("image_difference: robust mean of squared reach differences", "[vsi][difference]")
+{
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> a = {1.f, 2.f, 3.f, 4.f};
+  CHECK(Metrics::VSI::image_difference(a.data(), a.data(), a.size()) == 0.);
+  // equal differences: their plain mean; a pair missing in one image is ignored
+  const std::vector<float> b = {2.f, 3.f, nan, 5.f};
+  CHECK(Metrics::VSI::image_difference(a.data(), b.data(), a.size()) == Approx(1.));
+  // one outlier (d = 100 >= mean + 2 sd) is dropped: 1, not the plain mean 10.9
+  const std::vector<float> zero(10, 0.f);
+  std::vector<float> one(10, 1.f);
+  one[9] = 10.f;
+  CHECK(Metrics::VSI::image_difference(zero.data(), one.data(), zero.size()) == Approx(1.));
+  const std::vector<float> none(4, nan);
+  CHECK(std::isnan(Metrics::VSI::image_difference(a.data(), none.data(), a.size())));
+}
+
+TEST_CASE("vsi_edge_weights: image differences, unmeasured edges filled from neighbours", "[vsi][weights]")
+{
+  const Mesh mesh = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(3));
+  const Dual_graph graph = make_dual_graph(mesh);
+  const std::size_t n = graph.number_of_faces();
+  Metrics::VSI::Shape_images images;
+  images.reaches.resize(static_cast<Eigen::Index>(n), 3);
+  for(std::size_t f = 0; f < n; ++f)
+    images.reaches.row(static_cast<Eigen::Index>(f)).setConstant(float(f));
+  images.reaches.row(2).setConstant(std::numeric_limits<float>::quiet_NaN()); // face 2: no measured ray
+  std::size_t filled = 0;
+  const std::vector<double> w = Metrics::vsi_edge_weights(graph, images, Execution(2), &filled);
+  REQUIRE(w.size() == graph.number_of_edges());
+  std::size_t touching = 0;
+  for(std::size_t e = 0; e < w.size(); ++e)
+  {
+    const Dual_graph::Edge& edge = graph.edge(static_cast<Dual_graph::size_type>(e));
+    CHECK(std::isfinite(w[e]));
+    if(edge.face[0] == 2 || edge.face[1] == 2)
+      ++touching;
+    else
+    {
+      const double d = double(edge.face[0]) - double(edge.face[1]);
+      CHECK(w[e] == Approx(d * d));
+    }
+  }
+  CHECK(touching > 0);
+  CHECK(filled == touching);
 }

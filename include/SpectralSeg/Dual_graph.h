@@ -267,8 +267,15 @@ private:
 /// \tparam NamedParameters a sequence of named parameters
 ///
 /// \param tm the mesh
-/// \param np optional named parameters, as for `extract_mesh_geometry()`:
-///   `vertex_point_map`, `vertex_index_map`, `face_index_map`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}
+///     \cgalParamDescription{the vertex positions and the numbering of vertices and faces, as for `extract_mesh_geometry()`}
+///     \cgalParamType{property maps as for `extract_mesh_geometry()`}
+///     \cgalParamDefault{the mesh's internal maps}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_input if a face is not a triangle or a coordinate is not finite.
 template <typename TriangleMesh,

@@ -122,12 +122,25 @@ struct Mesh_geometry
 /// \tparam NamedParameters a sequence of named parameters
 ///
 /// \param tm the mesh
-/// \param np optional named parameters among:
-///   - `vertex_point_map`: a readable property map from the vertices of `tm`
-///     to points of a CGAL kernel; default `get(CGAL::vertex_point, tm)`
-///   - `vertex_index_map`, `face_index_map`: index maps; faces and vertices
-///     are stored in their order. Default: the mesh's internal indices, or
-///     an iteration order if the mesh has none.
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`, in any CGAL kernel (converted to `double`)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`: the order of `Mesh_geometry::points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map (iteration order for meshes without internal indices)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`: the order of every per-face array}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map (iteration order for meshes without internal indices)}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_input if a face is not a triangle or a coordinate is not finite.
 template <typename TriangleMesh,

@@ -8,7 +8,8 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
+#include <SpectralSeg/internal/mesh_parameters.h>
 #include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -20,44 +21,6 @@
 #include <vector>
 
 namespace SpectralSeg {
-
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-struct No_nearest_source_map {};
-
-template <typename NamedParameters>
-Execution execution_from(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const unsigned threads = static_cast<unsigned>(
-    choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_threads), 0));
-  Progress_callback progress =
-    choose_parameter(get_parameter(np, SpectralSeg::internal_np::progress_callback), Progress_callback());
-  return Execution(threads, progress);
-}
-
-template <typename Metric>
-std::vector<double> metric_weights(const Metric& metric, const Dual_graph& graph, const Execution& exec)
-{
-  exec.report(metric.name() + " weights", 0.);
-  std::vector<double> w = metric(graph, exec);
-  Metrics::check_weights(graph, w, metric.name());
-  exec.report(metric.name() + " weights", 1.);
-  return w;
-}
-
-template <typename NamedParameters>
-auto metric_from(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return choose_parameter(get_parameter(np, SpectralSeg::internal_np::metric), Metrics::Part_aware_weight<>());
-}
-
-} // namespace internal
-/// \endcond
 
 /// \ingroup PkgSpectralSegDistances
 /// \brief Computes the shortest-path distance, in the weighted dual graph,
@@ -74,16 +37,35 @@ auto metric_from(const NamedParameters& np)
 /// \param sources the source faces (at least one)
 /// \param distances receives each face's distance; `+infinity` for a face in
 ///        a connected component without a source
-/// \param np optional named parameters among:
-///   - `metric`: a model of `DualEdgeWeight`; default `Metrics::Part_aware_weight<>()`, the part-aware metric
-///     (geodesic, angular and VSI blended; components normalised by their 99th percentile)
-///   - `nearest_source_map`: a writable property map from faces to
-///     `std::size_t`, receiving the position in `sources` of each face's
-///     nearest source (`Nearest_source_distances::unreachable` if none)
-///   - `number_of_threads`: threads for the metric (default 0, all)
-///   - `progress_callback`: a `Progress_callback` (default none)
-///   - `vertex_point_map`, `vertex_index_map`, `face_index_map`: as for
-///     `extract_mesh_geometry()`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{metric}
+///     \cgalParamDescription{the weights of the dual edges (thesis, ch. 3)}
+///     \cgalParamType{a model of `DualEdgeWeight`}
+///     \cgalParamDefault{`Metrics::Part_aware_weight<>()`, the part-aware metric (thesis 3.5)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{nearest_source_map}
+///     \cgalParamDescription{receives, for each face, the position in `sources` of its nearest source (`Nearest_source_distances::unreachable` if none); ties go to the source Dijkstra settles first}
+///     \cgalParamType{a model of `WritablePropertyMap` with the face descriptor as key type and `std::size_t` as value type}
+///     \cgalParamDefault{not written}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads of the parallel stages; 0 means all hardware threads. The result does not depend on it}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called with each stage's name and done fraction; returning `false` cancels (`Operation_cancelled`)}
+///     \cgalParamType{`SpectralSeg::Progress_callback`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}
+///     \cgalParamDescription{the vertex positions and the numbering of vertices and faces, as for `extract_mesh_geometry()`}
+///     \cgalParamType{property maps as for `extract_mesh_geometry()`}
+///     \cgalParamDefault{the mesh's internal maps}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_input for a non-triangle face, a non-finite coordinate,
 ///         an empty source range or a metric that returns invalid weights
@@ -102,12 +84,10 @@ void face_distances(const TriangleMesh& tm, const FaceRange& sources, FaceDistan
   using CGAL::parameters::get_parameter;
   typedef boost::graph_traits<TriangleMesh> GT;
 
-  const Execution exec = internal::execution_from(np);
-  const auto metric = internal::metric_from(np);
   const auto fim = CGAL::get_initialized_face_index_map(tm, np);
-
-  const Dual_graph graph = make_dual_graph(tm, np);
-  const Weighted_dual_graph weighted(graph, internal::metric_weights(metric, graph, exec));
+  const internal::Weighted_mesh_graph g(tm, np);
+  const Execution& exec = g.exec;
+  const Weighted_dual_graph& weighted = g.weighted;
 
   std::vector<Dual_graph::size_type> source_ids;
   for(typename GT::face_descriptor f : sources)
@@ -128,7 +108,8 @@ void face_distances(const TriangleMesh& tm, const FaceRange& sources, FaceDistan
 }
 
 /// \ingroup PkgSpectralSegDistances
-/// \brief Single-source version of `face_distances()`: distances from `source`.
+/// \brief Single-source version of `face_distances()`: distances from
+/// `source`, with the same named parameters.
 template <typename TriangleMesh, typename FaceDistanceMap,
           typename NamedParameters = parameters::Default_named_parameters>
 void face_distances(const TriangleMesh& tm,

@@ -14,6 +14,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <functional>
+
 namespace SpectralSeg {
 
 /// \cond SKIP_IN_MANUAL
@@ -29,7 +31,9 @@ namespace internal_np {
   P(number_of_nystrom_samples_t, number_of_nystrom_samples) \
   P(sampling_method_t, sampling_method) \
   P(boundary_enhancement_t, boundary_enhancement) \
-  P(k_way_options_t, k_way_options)
+  P(k_way_options_t, k_way_options) \
+  P(max_number_of_segments_t, max_number_of_segments) \
+  P(min_boundary_contrast_t, min_boundary_contrast)
 
 #define SPECTRALSEG_DECLARE_TAG(X, Y) enum X { Y };
 SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_DECLARE_TAG)
@@ -61,14 +65,28 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_CHAIN)
 #undef SPECTRALSEG_CHAIN
 
-#define CGAL_add_named_parameter(X, Y, Z)                                        \
+#define SPECTRALSEG_CGAL_NP(X, Z)                                                \
   template <typename K>                                                          \
   Named_function_parameters<K, CGAL::internal_np::X, self> Z(const K& k) const   \
   {                                                                              \
     return Named_function_parameters<K, CGAL::internal_np::X, self>(k, *this);   \
   }
-#include <CGAL/STL_Extension/internal/parameters_interface.h>
-#undef CGAL_add_named_parameter
+#define SPECTRALSEG_CGAL_NP_CREF(X, Z)                                           \
+  template <typename K>                                                          \
+  Named_function_parameters<std::reference_wrapper<const K>, CGAL::internal_np::X, self> Z(const K& k) const \
+  {                                                                              \
+    return Named_function_parameters<std::reference_wrapper<const K>, CGAL::internal_np::X, self>(std::cref(k), *this); \
+  }
+#define SPECTRALSEG_CGAL_NP_REF(X, Z)                                            \
+  template <typename K>                                                          \
+  Named_function_parameters<std::reference_wrapper<K>, CGAL::internal_np::X, self> Z(K& k) const \
+  {                                                                              \
+    return Named_function_parameters<std::reference_wrapper<K>, CGAL::internal_np::X, self>(std::ref(k), *this); \
+  }
+#include <SpectralSeg/internal/cgal_parameters_interface.h>
+#undef SPECTRALSEG_CGAL_NP
+#undef SPECTRALSEG_CGAL_NP_CREF
+#undef SPECTRALSEG_CGAL_NP_REF
   /// \endcond
 };
 
@@ -91,14 +109,28 @@ using CGAL::parameters::Default_named_parameters;
 SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_START)
 #undef SPECTRALSEG_START
 
-#define CGAL_add_named_parameter(X, Y, Z)                         \
+#define SPECTRALSEG_CGAL_NP(X, Z)                                 \
   template <typename K>                                           \
   Named_function_parameters<K, CGAL::internal_np::X> Z(const K& k) \
   {                                                               \
     return Named_function_parameters<K, CGAL::internal_np::X>(k);  \
   }
-#include <CGAL/STL_Extension/internal/parameters_interface.h>
-#undef CGAL_add_named_parameter
+#define SPECTRALSEG_CGAL_NP_CREF(X, Z)                            \
+  template <typename K>                                           \
+  Named_function_parameters<std::reference_wrapper<const K>, CGAL::internal_np::X> Z(const K& k) \
+  {                                                               \
+    return Named_function_parameters<std::reference_wrapper<const K>, CGAL::internal_np::X>(std::cref(k)); \
+  }
+#define SPECTRALSEG_CGAL_NP_REF(X, Z)                             \
+  template <typename K>                                           \
+  Named_function_parameters<std::reference_wrapper<K>, CGAL::internal_np::X> Z(K& k) \
+  {                                                               \
+    return Named_function_parameters<std::reference_wrapper<K>, CGAL::internal_np::X>(std::ref(k)); \
+  }
+#include <SpectralSeg/internal/cgal_parameters_interface.h>
+#undef SPECTRALSEG_CGAL_NP
+#undef SPECTRALSEG_CGAL_NP_CREF
+#undef SPECTRALSEG_CGAL_NP_REF
 /// \endcond
 
 } // namespace parameters

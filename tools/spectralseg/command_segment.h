@@ -143,9 +143,12 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   else if(o.graph_cut_backend == "boost-list")
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_adjacency_list;
   auto run = [&](const auto& kernel) {
-    return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, std::max<std::size_t>(2, std::min(o.max_k, n - 1)), kernel, options, exec,
-                                                            o.min_boundary_contrast)
-                  : SpectralSeg::segment_k_way(weighted, k, kernel, options, exec);
+    SpectralSeg::Basic_K_way_automatic_options<std::decay_t<decltype(kernel)>> automatic;
+    automatic.k_way = options.with_kernel(kernel);
+    automatic.max_k = std::max<std::size_t>(2, std::min(o.max_k, n - 1));
+    automatic.min_boundary_contrast = o.min_boundary_contrast;
+    return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, automatic, exec)
+                  : SpectralSeg::segment_k_way(weighted, k, automatic.k_way, exec);
   };
   const SpectralSeg::K_way_result r =
     o.kernel == "gaussian" ? run(SpectralSeg::Kernels::Gaussian_kernel()) : run(SpectralSeg::Kernels::Exponential_kernel());

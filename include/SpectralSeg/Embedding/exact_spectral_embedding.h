@@ -7,7 +7,7 @@
 
 #include <SpectralSeg/Embedding/Spectral_embedding.h>
 #include <SpectralSeg/Embedding/internal/affinity.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <Eigen/Eigenvalues>

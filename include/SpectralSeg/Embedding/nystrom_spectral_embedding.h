@@ -10,7 +10,7 @@
 #include <SpectralSeg/Embedding/exact_spectral_embedding.h>
 #include <SpectralSeg/Embedding/internal/affinity.h>
 #include <SpectralSeg/Sampling/farthest_point_samples.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <Eigen/Cholesky>

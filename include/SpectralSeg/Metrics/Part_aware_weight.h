@@ -22,9 +22,9 @@ namespace Metrics {
 /// \f$\beta = 0.195\f$, \f$\gamma = 0.795\f$.
 ///
 /// The components are normalised by their 99th percentile (clamped at 1),
-/// not by their maximum as in the thesis: on the psb-dev models this lowers
-/// the k-way Rand-index error from 0.155 to 0.132. Pass
-/// `Normalization::maximum()` for the thesis's exact metric.
+/// not by their maximum as in the thesis (our change; doc/benchmarks.md has
+/// its effect on segmentation quality). Pass `Normalization::maximum()` for
+/// the thesis's exact metric.
 ///
 /// \tparam RayCaster the ray-casting backend of the VSI component
 ///

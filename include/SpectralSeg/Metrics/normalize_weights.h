@@ -39,9 +39,7 @@ inline void check_weights(const Dual_graph& graph, const std::vector<double>& we
 /// - `quantile(q)`: divide by the `q`-quantile of the weights and clamp at 1,
 ///   so that a few extreme edges (thin shells such as ears, where reference
 ///   points of adjacent faces land on different sides) do not squeeze all
-///   other weights towards 0. The part-aware metric uses `quantile(0.99)`:
-///   on the 38 psb-dev models it lowers the k-way Rand-index error from
-///   0.155 to 0.132 (see the user manual).
+///   other weights towards 0. The part-aware metric uses `quantile(0.99)`.
 struct Normalization
 {
   /// the quantile in (0, 1]; 1 means the maximum

@@ -27,9 +27,8 @@ namespace Refinement {
 /// `segment_k_way()` uses) a cut through a smooth stretch of surface is weak
 /// and the concave junction of a limb is strong, so repeatedly joining the
 /// two segments across the weakest boundary undoes the splits that K-means
-/// makes in large bodies. (The part-aware metric's own weights were tried
-/// too and do worse on psb-dev: 0.124 against 0.120 with two extra clusters,
-/// Embree ray casting.) Ties go to the pair with the smallest
+/// makes in large bodies. Any other per-edge weight can serve as the
+/// boundary strength (doc/benchmarks.md compares some). Ties go to the pair with the smallest
 /// labels, so the result is deterministic. Segments with no neighbour (whole
 /// connected components) are never merged, so more than `k` may remain.
 /// Labels are renumbered `0 .. count-1` by their smallest face.

@@ -6,10 +6,10 @@
 #define SPECTRALSEG_RENDERING_IMAGE_H
 
 #include <SpectralSeg/Rendering/Color_map.h>
+#include <SpectralSeg/exceptions.h>
 
 #include <algorithm>
 #include <cstddef>
-#include <stdexcept>
 #include <vector>
 
 namespace SpectralSeg {
@@ -34,7 +34,7 @@ struct Image
     : width(w), height(h)
   {
     if(w < 0 || h < 0)
-      throw std::invalid_argument("Image: negative size");
+      throw Invalid_input("Image: negative size");
     rgb.resize(3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     fill(background);
   }
@@ -47,7 +47,8 @@ struct Image
     return x >= 0 && y >= 0 && x < width && y < height;
   }
 
-  /// \brief Returns the colour of pixel `(x, y)`, which must lie inside.
+  /// \brief Returns the colour of pixel `(x, y)`.
+  /// \pre `contains(x, y)`
   /// \param x the column
   /// \param y the row, 0 at the top
   Rgb pixel(int x, int y) const
@@ -56,7 +57,8 @@ struct Image
     return Rgb{rgb[i], rgb[i + 1], rgb[i + 2]};
   }
 
-  /// \brief Sets the colour of pixel `(x, y)`, which must lie inside.
+  /// \brief Sets the colour of pixel `(x, y)`.
+  /// \pre `contains(x, y)`
   /// \param x the column
   /// \param y the row, 0 at the top
   /// \param c the new colour

@@ -15,7 +15,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -82,12 +81,12 @@ struct Camera_frame
 /// perpendicular to `direction` is used instead.
 /// \param direction the viewing direction, from the camera into the scene
 /// \param up the direction that should appear upwards in the image
-/// \throws std::invalid_argument if `direction` is zero or not finite
+/// \throws SpectralSeg::Invalid_input if `direction` is zero or not finite
 inline Camera_frame camera_frame(const Vec3& direction, const Vec3& up)
 {
   const Vec3 f = normalized(direction);
   if(dot(f, f) == 0.0)
-    throw std::invalid_argument("Software_rasterizer: view direction must be finite and non-zero");
+    throw Invalid_input("Software_rasterizer: view direction must be finite and non-zero");
   Vec3 r = normalized(cross(f, normalized(up)));
   if(dot(r, r) < 0.5)
   {
@@ -143,19 +142,19 @@ inline Bounding_sphere bounding_sphere(const std::vector<Vec3>& points,
 /// \param triangles the faces
 /// \param n_colors the number of per-face values supplied
 /// \param what the name of the per-face values, for the error message
-/// \throws std::invalid_argument on mismatch or out-of-range index
+/// \throws SpectralSeg::Invalid_input on mismatch or out-of-range index
 inline void check_mesh(std::size_t n_points,
                        const std::vector<std::array<std::size_t, 3>>& triangles,
                        std::size_t n_colors, const char* what)
 {
   if(n_colors != triangles.size())
-    throw std::invalid_argument(std::string("SpectralSeg::Rendering: ") + std::to_string(n_colors)
+    throw Invalid_input(std::string("SpectralSeg::Rendering: ") + std::to_string(n_colors)
                                 + " " + what + " given for " + std::to_string(triangles.size())
                                 + " triangles");
   for(std::size_t f = 0; f < triangles.size(); ++f)
     for(std::size_t v : triangles[f])
       if(v >= n_points)
-        throw std::invalid_argument("SpectralSeg::Rendering: triangle " + std::to_string(f)
+        throw Invalid_input("SpectralSeg::Rendering: triangle " + std::to_string(f)
                                     + " references vertex " + std::to_string(v) + " but only "
                                     + std::to_string(n_points) + " vertices exist");
 }
@@ -229,13 +228,13 @@ public:
   /// \param width the image width in pixels, in [1, 16384]
   /// \param height the image height in pixels, in [1, 16384]
   /// \param supersample whether to average 2x2 samples per pixel
-  /// \throws std::invalid_argument if a size is out of range
+  /// \throws SpectralSeg::Invalid_input if a size is out of range
   Software_rasterizer(int width, int height, bool supersample = true)
     : width_(width), height_(height), supersample_(supersample)
   {
     if(width < 1 || height < 1 || width > internal::max_image_side / 2
        || height > internal::max_image_side / 2)
-      throw std::invalid_argument("Software_rasterizer: image size must be in [1, "
+      throw Invalid_input("Software_rasterizer: image size must be in [1, "
                                   + std::to_string(internal::max_image_side / 2) + "]");
   }
 
@@ -256,7 +255,7 @@ public:
   ///        camera into the scene), e.g. `{0, 0, -1}` for a camera on +Z
   /// \param up the world direction shown upwards in the image
   /// \return the image, white where no face is visible
-  /// \throws std::invalid_argument if `face_colors` does not have one colour
+  /// \throws SpectralSeg::Invalid_input if `face_colors` does not have one colour
   ///         per face, an index is out of range, or `view_direction` is zero
   Image render(const std::vector<Point_3>& points,
                const std::vector<Triangle>& triangles,

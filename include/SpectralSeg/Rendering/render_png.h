@@ -15,7 +15,6 @@
 #include <array>
 #include <cstddef>
 #include <limits>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -56,7 +55,7 @@ struct Render_options
 /// \param colors one colour per face
 /// \param options image size, anti-aliasing and views
 /// \return an image of `views.size() * view_width` x `view_height` pixels
-/// \throws std::invalid_argument if `colors` does not have one entry per
+/// \throws SpectralSeg::Invalid_input if `colors` does not have one entry per
 ///         face, an index is out of range, `views` is empty, a view
 ///         direction is zero, or the view size is out of range (see
 ///         `Software_rasterizer`)
@@ -67,12 +66,12 @@ inline Image render_face_colors(const std::vector<std::array<double, 3>>& points
 {
   internal::check_mesh(points.size(), triangles, colors.size(), "face colours");
   if(options.views.empty())
-    throw std::invalid_argument("render_face_colors: no view requested");
+    throw Invalid_input("render_face_colors: no view requested");
   const Software_rasterizer rasterizer(options.view_width, options.view_height,
                                        options.supersample);
   const int max_views = std::numeric_limits<int>::max() / options.view_width;
   if(options.views.size() > static_cast<std::size_t>(max_views))
-    throw std::invalid_argument("render_face_colors: too many views for one image");
+    throw Invalid_input("render_face_colors: too many views for one image");
   Image picture(static_cast<int>(options.views.size()) * options.view_width,
                 options.view_height);
   for(std::size_t i = 0; i < options.views.size(); ++i)
@@ -92,8 +91,8 @@ inline Image render_face_colors(const std::vector<std::array<double, 3>>& points
 /// \param triangles the faces, as indices into `points`
 /// \param field one value per face
 /// \param options image size, anti-aliasing and views
-/// \throws std::invalid_argument as `render_face_colors()`, naming the field
-/// \throws std::runtime_error if the file cannot be written
+/// \throws SpectralSeg::Invalid_input as `render_face_colors()`, naming the field
+/// \throws SpectralSeg::Io_error if the file cannot be written
 inline void render_face_field_png(const std::string& path,
                                   const std::vector<std::array<double, 3>>& points,
                                   const std::vector<std::array<std::size_t, 3>>& triangles,
@@ -111,8 +110,8 @@ inline void render_face_field_png(const std::string& path,
 /// \param triangles the faces, as indices into `points`
 /// \param labels one label per face
 /// \param options image size, anti-aliasing and views
-/// \throws std::invalid_argument as `render_face_colors()`, naming the labels
-/// \throws std::runtime_error if the file cannot be written
+/// \throws SpectralSeg::Invalid_input as `render_face_colors()`, naming the labels
+/// \throws SpectralSeg::Io_error if the file cannot be written
 inline void render_face_labels_png(const std::string& path,
                                    const std::vector<std::array<double, 3>>& points,
                                    const std::vector<std::array<std::size_t, 3>>& triangles,

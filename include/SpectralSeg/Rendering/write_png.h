@@ -15,7 +15,6 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
-#include <stdexcept>
 #include <string>
 
 namespace SpectralSeg {
@@ -98,17 +97,17 @@ inline bool write_png_stream(std::FILE* file, const Image& img, Png_error_state&
 /// \brief Writes `img` to `path` as an 8-bit RGB PNG file.
 /// \param path the output file, created or overwritten
 /// \param img the image; must be at least 1x1 with `3 * width * height` bytes
-/// \throws std::invalid_argument if the image is empty or inconsistent
-/// \throws SpectralSeg::Io_error (a `std::runtime_error`) if the file cannot be opened or written; the
+/// \throws SpectralSeg::Invalid_input if the image is empty or inconsistent
+/// \throws SpectralSeg::Io_error if the file cannot be opened or written; the
 ///         message names `path`
 inline void write_png(const std::string& path, const Image& img)
 {
   if(img.width <= 0 || img.height <= 0)
-    throw std::invalid_argument("write_png: cannot write an empty image to '" + path + "'");
+    throw Invalid_input("write_png: cannot write an empty image to '" + path + "'");
   const std::size_t n_pixels =
       static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height);
   if(img.rgb.size() != 3 * n_pixels)
-    throw std::invalid_argument("write_png: image buffer size does not match its dimensions for '"
+    throw Invalid_input("write_png: image buffer size does not match its dimensions for '"
                                 + path + "'");
 
   std::FILE* file = std::fopen(path.c_str(), "wb");

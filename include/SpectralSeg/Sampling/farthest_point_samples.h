@@ -7,7 +7,7 @@
 #define SPECTRALSEG_SAMPLING_FARTHEST_POINT_SAMPLES_H
 
 #include <SpectralSeg/Execution.h>
-#include <SpectralSeg/dual_graph_distances.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <algorithm>

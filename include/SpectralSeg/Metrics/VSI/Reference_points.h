@@ -11,6 +11,8 @@
 #include <SpectralSeg/internal/Point_neighbours.h>
 #include <SpectralSeg/internal/parallel_for.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <Eigen/Core>
 
 #include <cmath>
@@ -86,7 +88,7 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
 {
   const Mesh_geometry& geo = graph.geometry();
   const std::size_t n = geo.number_of_faces();
-  const double pi = 3.14159265358979323846;
+  const double pi = CGAL_PI;
   Reference_points out;
   out.points.resize(n);
   out.diameters.assign(n, std::numeric_limits<double>::quiet_NaN());

@@ -6,6 +6,8 @@
 #ifndef SPECTRALSEG_METRICS_VSI_RAY_DIRECTIONS_H
 #define SPECTRALSEG_METRICS_VSI_RAY_DIRECTIONS_H
 
+#include <CGAL/number_type_config.h>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -28,7 +30,7 @@ inline std::vector<Eigen::Vector3d> cone_directions(std::size_t count, double op
   if(count == 0)
     return d;
   d.emplace_back(0., 0., 1.);
-  const double golden = 3.14159265358979323846 * (3. - std::sqrt(5.));
+  const double golden = CGAL_PI * (3. - std::sqrt(5.));
   const double cos_rim = std::cos(0.5 * opening_angle);
   for(std::size_t j = 1; j < count; ++j)
   {
@@ -62,7 +64,7 @@ inline void rotate_to(const Eigen::Vector3d& axis, const std::vector<Eigen::Vect
 inline std::vector<Eigen::Vector3d> antipodal_directions(std::size_t pairs)
 {
   std::vector<Eigen::Vector3d> d;
-  const double golden = 3.14159265358979323846 * (3. - std::sqrt(5.));
+  const double golden = CGAL_PI * (3. - std::sqrt(5.));
   for(std::size_t k = 0; k < pairs; ++k)
   {
     const double z = (double(k) + 0.5) / double(pairs);

@@ -1,0 +1,139 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file K_way_options.h
+/// \brief The options and the result of the k-way segmentation.
+#ifndef SPECTRALSEG_K_WAY_OPTIONS_H
+#define SPECTRALSEG_K_WAY_OPTIONS_H
+
+#include <SpectralSeg/Clustering/Kmeans.h>
+#include <SpectralSeg/Embedding/Spectral_embedding.h>
+#include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
+#include <SpectralSeg/Kernels/Exponential_kernel.h>
+#include <SpectralSeg/Refinement/graph_cut_boundaries.h>
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief Parameters of `segment_k_way()` (thesis ch. 4 and 5), the affinity
+/// kernel included. Use the alias `K_way_options` for the default kernel.
+///
+/// \tparam AffinityKernel a model of `AffinityKernel`
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+struct Basic_K_way_options
+{
+  /// the kernel type
+  typedef AffinityKernel Kernel_type;
+  /// the affinity kernel (thesis 4.2.3)
+  AffinityKernel kernel = AffinityKernel();
+  /// exact or Nyström embedding, samples, seed (thesis 4.2, 5.2)
+  Embedding::Embedding_options embedding;
+  /// whether the K-means labels are refined by the graph cut (thesis 4.3.3)
+  bool boundary_enhancement = true;
+  /// \f$\mu\f$, \f$\nu\f$ and max-flow backend of the graph cut
+  Refinement::Graph_cut_options graph_cut;
+  /// bound on K-means rounds
+  std::size_t kmeans_iterations = 100;
+  /// Nyström path: seed K-means with the first `k` sample faces (the
+  /// thesis, 5.5); if false, with max-min seeds in the embedding, as the
+  /// exact path does
+  bool seed_with_samples = true;
+  /// over-segment and merge (our addition): the embedding and K-means use
+  /// `k + extra_clusters` clusters, then the adjacent segments whose
+  /// boundary has the smallest mean concave dihedral angle are merged until
+  /// `k` are left (`Refinement::merge_weakest_boundaries()` with
+  /// `Refinement::concave_angle_weights()`). K-means splits large bodies
+  /// into pieces of similar spread and leaves small parts (fins, horns,
+  /// fingers) unsplit; the extra clusters take those small parts and the
+  /// merge joins the body pieces across their smooth seams. 0 gives the
+  /// thesis's method (`thesis()`).
+  std::size_t extra_clusters = 3;
+  /// merging also stops when every boundary's mean concave angle (radians)
+  /// is at least this
+  double merge_strength_limit = std::numeric_limits<double>::infinity();
+  /// segments smaller than this fraction of the mesh area are merged
+  /// first, whatever their boundary: without it the sharp crease around an
+  /// ear keeps the ear while the smooth hip joint merges the leg into the
+  /// body
+  double merge_min_area_fraction = 0.005;
+
+  /// the thesis's k-way method: K-means with exactly `k` clusters
+  static Basic_K_way_options thesis()
+  {
+    Basic_K_way_options o;
+    o.extra_clusters = 0;
+    return o;
+  }
+
+  /// the same options with another kernel
+  template <typename OtherKernel>
+  Basic_K_way_options<OtherKernel> with_kernel(const OtherKernel& other) const
+  {
+    Basic_K_way_options<OtherKernel> o;
+    o.kernel = other;
+    o.embedding = embedding;
+    o.boundary_enhancement = boundary_enhancement;
+    o.graph_cut = graph_cut;
+    o.kmeans_iterations = kmeans_iterations;
+    o.seed_with_samples = seed_with_samples;
+    o.extra_clusters = extra_clusters;
+    o.merge_strength_limit = merge_strength_limit;
+    o.merge_min_area_fraction = merge_min_area_fraction;
+    return o;
+  }
+};
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief The k-way options with the exponential kernel, the default.
+typedef Basic_K_way_options<Kernels::Exponential_kernel> K_way_options;
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief Parameters of `segment_k_way_automatic()`: the k-way options and
+/// the rule that chooses the number of segments (our addition).
+///
+/// \tparam AffinityKernel a model of `AffinityKernel`
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+struct Basic_K_way_automatic_options
+{
+  /// the options of the k-way segmentation the rule runs;
+  /// `extra_clusters` and `merge_strength_limit` are replaced by the rule's
+  /// values
+  Basic_K_way_options<AffinityKernel> k_way;
+  /// the largest number of segments; at least 2
+  std::size_t max_k = 20;
+  /// merging stops once the weakest boundary's mean concave angle reaches
+  /// this many times the mesh's mean concave angle
+  double min_boundary_contrast = 3.;
+};
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief The automatic k-way options with the exponential kernel, the
+/// default.
+typedef Basic_K_way_automatic_options<Kernels::Exponential_kernel> K_way_automatic_options;
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief What `segment_k_way()` and `segment_k_way_automatic()` produce.
+struct K_way_result
+{
+  /// one segment per face, in `[0, number_of_segments)`, each segment one
+  /// connected region, numbered by their smallest face
+  std::vector<int> labels;
+  /// number of segments: `k`, or more on a mesh with more connected
+  /// components than `k`, or fewer if a cluster vanished
+  std::size_t number_of_segments = 0;
+  /// the spectral embedding the clusters were found in
+  Embedding::Spectral_embedding embedding;
+  /// K-means result, before the graph cut
+  Clustering::Kmeans_result clusters;
+  /// seconds spent in each stage, in order
+  std::vector<std::pair<std::string, double>> timings;
+};
+
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_K_WAY_OPTIONS_H

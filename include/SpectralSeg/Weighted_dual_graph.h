@@ -1,0 +1,156 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file Weighted_dual_graph.h
+/// \brief `Weighted_dual_graph`: shortest-path distances on the dual graph weighted by a metric (Boost Graph Library Dijkstra).
+#ifndef SPECTRALSEG_WEIGHTED_DUAL_GRAPH_H
+#define SPECTRALSEG_WEIGHTED_DUAL_GRAPH_H
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Execution.h>
+#include <SpectralSeg/Metrics/normalize_weights.h>
+#include <SpectralSeg/internal/parallel_for.h>
+
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace SpectralSeg {
+
+/// \ingroup PkgSpectralSegDistances
+/// \brief Distances from a set of source faces, with the nearest source of each face.
+struct Nearest_source_distances
+{
+  /// value of `nearest_source` for a face that no source reaches
+  static constexpr std::size_t unreachable = static_cast<std::size_t>(-1);
+  /// distance of each face to its nearest source; `+infinity` if unreachable
+  std::vector<double> distance;
+  /// position, in the source list, of each face's nearest source; `unreachable` if none
+  std::vector<std::size_t> nearest_source;
+};
+
+/// \ingroup PkgSpectralSegDistances
+/// \brief A dual graph with one weight per dual edge, ready for repeated
+/// shortest-path queries.
+///
+/// Faces in another connected component than every source are unreachable:
+/// their distance is `+infinity` (`std::numeric_limits<double>::infinity()`).
+/// Queries are independent and const, so they can run concurrently.
+class Weighted_dual_graph
+{
+public:
+  /// face index type
+  typedef Dual_graph::size_type size_type;
+
+  /// \param graph the dual graph
+  /// \pre `graph` outlives this object
+  /// \param weights one finite, non-negative weight per dual edge
+  /// \throws Invalid_input if the weights are not valid
+  Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights)
+    : graph_(graph), weights_(weights), arc_weights_(num_edges(graph.csr()))
+  {
+    Metrics::check_weights(graph, weights);
+    const Dual_graph::Csr& g = graph.csr();
+    for(auto e : boost::make_iterator_range(boost::edges(g)))
+      arc_weights_[get(boost::edge_index, g, e)] = weights[g[e].dual_edge];
+  }
+
+  /// a temporary graph would dangle: keep the graph alive while this object is used
+  Weighted_dual_graph(Dual_graph&&, const std::vector<double>&) = delete;
+
+  /// the dual graph
+  const Dual_graph& graph() const { return graph_; }
+
+  /// the weight of each dual edge, indexed like `Dual_graph::edges()`
+  const std::vector<double>& weights() const { return weights_; }
+
+  /// distances from one source face
+  std::vector<double> distances(size_type source) const
+  {
+    std::vector<double> d;
+    run(std::vector<size_type>(1, source), d, nullptr);
+    return d;
+  }
+
+  /// distances to the nearest of several source faces (at least one); when
+  /// two sources are equally near, the one that reaches the face first in
+  /// Dijkstra's order wins, which is deterministic
+  Nearest_source_distances distances(const std::vector<size_type>& sources) const
+  {
+    Nearest_source_distances out;
+    run(sources, out.distance, &out.nearest_source);
+    return out;
+  }
+
+  /// Row `i` of the result holds the distances from `sources[i]` to every
+  /// face. Rows are computed in parallel; each row is one Dijkstra run, so
+  /// the result does not depend on the number of threads.
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
+  distance_rows(const std::vector<size_type>& sources, const Execution& exec = Execution()) const
+  {
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows(
+      static_cast<Eigen::Index>(sources.size()), static_cast<Eigen::Index>(graph_.number_of_faces()));
+    internal::parallel_for(sources.size(), exec, "distance rows", [&](std::size_t i) {
+      const std::vector<double> d = distances(sources[i]);
+      rows.row(static_cast<Eigen::Index>(i)) = Eigen::Map<const Eigen::RowVectorXd>(d.data(), static_cast<Eigen::Index>(d.size()));
+    });
+    return rows;
+  }
+
+private:
+  // One Dijkstra run from `sources`; records the nearest source only when
+  // `nearest` is given (the single-source queries of distance_rows() skip it).
+  void run(const std::vector<size_type>& sources, std::vector<double>& distance,
+           std::vector<std::size_t>* nearest) const
+  {
+    const Dual_graph::Csr& g = graph_.csr();
+    const std::size_t n = graph_.number_of_faces();
+    if(sources.empty())
+      throw Invalid_input("distances: no source face given");
+    for(size_type s : sources)
+      if(s >= n)
+        throw Invalid_input("distances: source face " + std::to_string(s) + " is out of range (the mesh has " +
+                            std::to_string(n) + " faces)");
+    distance.assign(n, std::numeric_limits<double>::infinity());
+    const auto index = get(boost::vertex_index, g);
+    const auto weight = boost::make_iterator_property_map(arc_weights_.begin(), get(boost::edge_index, g));
+    const auto dmap = boost::make_iterator_property_map(distance.begin(), index);
+    const double inf = std::numeric_limits<double>::infinity();
+    if(nearest)
+    {
+      nearest->assign(n, Nearest_source_distances::unreachable);
+      for(std::size_t i = sources.size(); i-- > 0;) // the first listed source wins a duplicate
+        (*nearest)[sources[i]] = i;
+      boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
+                                     index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
+                                     boost::make_dijkstra_visitor(Nearest_recorder{nearest}));
+    }
+    else
+      boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
+                                     index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
+                                     boost::default_dijkstra_visitor());
+  }
+
+  struct Nearest_recorder
+  {
+    typedef boost::on_edge_relaxed event_filter;
+    std::vector<std::size_t>* nearest;
+    template <typename Edge, typename Graph>
+    void operator()(Edge e, const Graph& g) const
+    {
+      (*nearest)[target(e, g)] = (*nearest)[source(e, g)];
+    }
+  };
+
+  const Dual_graph& graph_;
+  std::vector<double> weights_;
+  std::vector<double> arc_weights_;
+};
+
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_WEIGHTED_DUAL_GRAPH_H

@@ -1,0 +1,261 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file segment_k_way.h
+/// \brief k-way segmentation of a weighted dual graph, with a given or an
+/// automatically chosen number of segments (thesis ch. 4 and 5).
+#ifndef SPECTRALSEG_SEGMENT_K_WAY_H
+#define SPECTRALSEG_SEGMENT_K_WAY_H
+
+#include <SpectralSeg/Clustering/Kmeans.h>
+#include <SpectralSeg/Embedding/exact_spectral_embedding.h>
+#include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
+#include <SpectralSeg/K_way_options.h>
+#include <SpectralSeg/Refinement/connected_segments.h>
+#include <SpectralSeg/Refinement/graph_cut_boundaries.h>
+#include <SpectralSeg/Refinement/merge_segments.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
+#include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/Stage_timer.h>
+
+#include <algorithm>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The embedding of `segment_k_way()`: exact for small meshes (or when asked,
+// or when the mesh is too small for the Nyström samples), else Nyström.
+template <typename AffinityKernel>
+Embedding::Spectral_embedding embed(const Weighted_dual_graph& graph, std::size_t dims, const AffinityKernel& kernel,
+                                    const Embedding::Embedding_options& options, const Execution& exec)
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  const bool exact = options.method == Embedding::Method::exact ||
+                     (options.method == Embedding::Method::automatic && n <= options.exact_face_limit) ||
+                     (options.samples > 0 ? options.samples : dims + 1) > n;
+  return exact ? Embedding::exact_spectral_embedding(graph, dims, kernel, exec)
+               : Embedding::nystrom_spectral_embedding(graph, dims, kernel, options, exec);
+}
+
+// K-means, merge (when over-segmented), graph cut and connected segments on
+// r.embedding: k clusters, k_final segments.
+template <typename AffinityKernel>
+void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
+             const Basic_K_way_options<AffinityKernel>& options,
+                    K_way_result& r, Stage_timer& lap, const Execution& exec)
+{
+  if(r.embedding.coordinates.cols() == 0)
+    throw Error("k-way segmentation: the affinity matrix has no positive eigenvalue after the first");
+  exec.report("k-means", 0.);
+  std::vector<std::size_t> seeds;
+  if(!r.embedding.exact && options.seed_with_samples)
+    for(std::size_t i = 0; i < k && i < r.embedding.samples.size(); ++i)
+      seeds.push_back(r.embedding.samples[i]);
+  r.clusters = Clustering::kmeans(r.embedding.coordinates, k, seeds, options.kmeans_iterations, exec);
+
+  r.labels = r.clusters.labels;
+  exec.report("k-means", 1.);
+  lap("k-means");
+  // Over-segmented: merge first, then cut the k merged segments with their
+  // mean embedding as proxies. With several connected components the
+  // segments can outnumber the clusters (each component is at least one),
+  // and a graph cut on that many labels would crawl: there, cut the K-means
+  // clusters first and merge afterwards.
+  std::vector<double> concave;
+  const auto merge = [&](std::vector<int>& labels) {
+    if(concave.empty())
+      concave = Refinement::concave_angle_weights(graph.graph());
+    return Refinement::merge_weakest_boundaries(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
+                                                options.merge_min_area_fraction);
+  };
+  Eigen::MatrixXd proxies = r.clusters.centroids;
+  bool merged = false;
+  if(k > k_final)
+  {
+    std::vector<int> labels = r.labels;
+    Refinement::make_segments_connected(graph.graph(), labels);
+    const std::size_t m = merge(labels);
+    if(m <= k)
+    {
+      proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), r.embedding.coordinates.cols());
+      std::vector<double> count(m, 0.);
+      for(std::size_t f = 0; f < labels.size(); ++f) // in face order: thread-independent
+      {
+        proxies.row(labels[f]) += r.embedding.coordinates.row(static_cast<Eigen::Index>(f));
+        count[std::size_t(labels[f])] += 1.;
+      }
+      for(std::size_t c = 0; c < m; ++c)
+        proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
+      r.labels = std::move(labels);
+      merged = true;
+    }
+    lap("merge");
+  }
+  if(options.boundary_enhancement)
+  {
+    exec.report("graph cut", 0.);
+    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, proxies, r.labels, options.graph_cut);
+    exec.report("graph cut", 1.);
+    lap("graph cut");
+  }
+  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+  lap("connected segments");
+  if(!merged && r.number_of_segments > k_final)
+  {
+    r.number_of_segments = merge(r.labels);
+    lap("merge");
+  }
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief Segments the faces of a weighted dual graph into `k` parts.
+///
+/// With \f$m = k +\f$ `options.extra_clusters` (3 by default, 0 for the
+/// thesis's method):
+/// 1. spectral embedding in \f$m\f$ dimensions: exact for small meshes,
+///    Nyström with \f$m + 1\f$ farthest-point samples for large ones
+///    (`options.embedding`);
+/// 2. K-means in the embedding into \f$m\f$ clusters, seeded with the
+///    sample faces (Nyström) or by max-min (exact);
+/// 3. if \f$m > k\f$: the clusters are made connected regions and the
+///    adjacent ones with the weakest (least concave) boundary are merged
+///    until \f$k\f$ are left (`Refinement::merge_weakest_boundaries()`);
+///    each merged segment's proxy is its mean in the embedding;
+/// 4. graph-cut boundary enhancement on the \f$k\f$ segments (optional);
+/// 5. every segment made one connected region (`Refinement::make_segments_connected()`).
+///
+/// On a mesh with more connected components than \f$m\f$ the merge cannot
+/// bring the segments down to \f$m\f$ labels; there the graph cut runs on
+/// the \f$m\f$ K-means clusters and the merge comes last.
+///
+/// \tparam AffinityKernel a model of `AffinityKernel`
+/// \param graph the dual graph weighted by a metric
+/// \param k the number of segments wanted
+/// \param options every parameter of the method, the kernel included
+/// \param exec threads and progress callback
+/// \throws Invalid_input if `k` is 0 or larger than the number of faces
+/// \throws Error if the affinity matrix has no positive eigenvalue after the first
+/// \throws Operation_cancelled if the progress callback asks to stop
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
+                           const Basic_K_way_options<AffinityKernel>& options = Basic_K_way_options<AffinityKernel>(),
+                           const Execution& exec = Execution())
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  if(k == 0 || k > n)
+    throw Invalid_input("k-way segmentation: k = " + std::to_string(k) + " but the mesh has " + std::to_string(n) +
+                        " faces (k must be between 1 and the number of faces)");
+  K_way_result r;
+  internal::Stage_timer lap(r.timings);
+  if(k == 1 || n < 3)
+  {
+    r.labels.assign(n, 0);
+    r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+    return r;
+  }
+
+  const std::size_t clusters = std::min(k + options.extra_clusters, n - 1);
+  const std::size_t dims = std::min(clusters, n - 1);
+  r.embedding = internal::embed(graph, dims, options.kernel, options.embedding, exec);
+  lap("embedding");
+  internal::cluster(graph, std::max(k, clusters), k, options, r, lap, exec);
+  return r;
+}
+
+/// \ingroup PkgSpectralSegKWay
+/// \brief `segment_k_way()` that chooses the number of segments itself,
+/// between 2 and `options.max_k` (the rule of `spectralseg segment --k auto`; our
+/// addition, the thesis takes k from the user).
+///
+/// The mesh is over-segmented into `options.max_k` clusters (embedding in
+/// `max_k` dimensions, Nyström with `max_k + 1` samples), then adjacent segments are
+/// merged weakest boundary first (`Refinement::merge_weakest_boundaries()`
+/// with `Refinement::concave_angle_weights()`) for as long as the weakest
+/// boundary's mean concave dihedral angle is below `options.min_boundary_contrast`
+/// times the mean concave angle of all the mesh's edges (both means weighted
+/// by edge length), and never below 2 segments. Parts that meet at a crease
+/// stay apart, pieces of one smooth body are joined. The limit is relative
+/// so that it does not depend on the mesh resolution: coarse meshes have
+/// larger dihedral angles everywhere.
+///
+/// Segments under `options.k_way.merge_min_area_fraction` of the area are merged
+/// whatever their boundary, as in `segment_k_way()`. The default contrast
+/// and the choice of a relative limit are explained, with their scores, in
+/// doc/benchmarks.md.
+///
+/// `options.k_way.extra_clusters` and `options.k_way.merge_strength_limit`
+/// are replaced by the rule's values; the other k-way options apply as in
+/// `segment_k_way()`.
+/// \tparam AffinityKernel a model of `AffinityKernel`
+/// \param graph the dual graph weighted by a metric
+/// \param options the k-way options, `max_k` and `min_boundary_contrast`
+/// \param exec threads and progress callback
+/// \throws Invalid_input if `options.max_k` is below 2
+/// \throws Operation_cancelled if the progress callback asks to stop
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph,
+                                     const Basic_K_way_automatic_options<AffinityKernel>& options =
+                                       Basic_K_way_automatic_options<AffinityKernel>(),
+                                     const Execution& exec = Execution())
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  if(options.max_k < 2)
+    throw Invalid_input("automatic k-way segmentation: the largest k must be at least 2");
+  if(n < 3)
+    return segment_k_way(graph, 1, options.k_way, exec);
+  Basic_K_way_options<AffinityKernel> o = options.k_way;
+  o.extra_clusters = options.max_k - 2;
+  // the mesh's mean concave angle, each dual edge counted with its length
+  const std::vector<double> w = Refinement::concave_angle_weights(graph.graph());
+  double sum = 0., length = 0.;
+  for(std::size_t d = 0; d < w.size(); ++d)
+  {
+    const double l = graph.graph().edge(static_cast<Dual_graph::size_type>(d)).length;
+    sum += l * w[d];
+    length += l;
+  }
+  o.merge_strength_limit = options.min_boundary_contrast * (length > 0. ? sum / length : 0.);
+  return segment_k_way(graph, 2, o, exec);
+}
+
+/// \cond SKIP_IN_MANUAL
+// Deprecated positional forms (kernel, options and, for the automatic rule,
+// max_k and min_boundary_contrast as separate arguments).
+template <typename T> struct Is_k_way_options : std::false_type {};
+template <typename K> struct Is_k_way_options<Basic_K_way_options<K>> : std::true_type {};
+
+template <typename AffinityKernel,
+          typename = std::enable_if_t<!Is_k_way_options<AffinityKernel>::value>>
+[[deprecated("put the kernel into the options: segment_k_way(graph, k, options.with_kernel(kernel), exec)")]]
+K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k, const AffinityKernel& kernel,
+                           const K_way_options& options = K_way_options(), const Execution& exec = Execution())
+{
+  return segment_k_way(graph, k, options.with_kernel(kernel), exec);
+}
+
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+[[deprecated("use segment_k_way_automatic(graph, K_way_automatic_options, exec)")]]
+K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph, std::size_t max_k,
+                                     const AffinityKernel& kernel = AffinityKernel(),
+                                     const K_way_options& options = K_way_options(),
+                                     const Execution& exec = Execution(), double min_boundary_contrast = 3.)
+{
+  Basic_K_way_automatic_options<AffinityKernel> o;
+  o.k_way = options.with_kernel(kernel);
+  o.max_k = max_k;
+  o.min_boundary_contrast = min_boundary_contrast;
+  return segment_k_way_automatic(graph, o, exec);
+}
+/// \endcond
+
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_SEGMENT_K_WAY_H
