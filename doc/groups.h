@@ -391,3 +391,28 @@ namespace SpectralSeg {
 /// \brief The 2D contour analysis of the segmentability test.
 namespace Segmentability {}
 } // namespace SpectralSeg
+
+/// \defgroup PkgSpectralSegAutomatic Automatic segmentation
+/// \ingroup PkgSpectralSegRef
+/// \brief Segmentation into as many parts as the shape has (thesis ch. 6):
+/// `segment_automatically()` on a dual graph, `automatic_segmentation()` on a
+/// mesh; pieces (`Mesh_piece`) are tested (\ref PkgSpectralSegSegmentability),
+/// cut at their most salient place (\ref PkgSpectralSegSalientCut,
+/// \ref PkgSpectralSegSalience), and the cuts kept in a `Part_hierarchy`.
+
+/// \defgroup PkgSpectralSegSalience Salience terms
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief Part salience (thesis 6.4): the terms (`Salience::Size_term`,
+/// `Salience::Boundary_strength_term`, `Salience::Protrusion_term`), their
+/// weighted sum `Salience::Weighted_salience`, and the search state they read.
+
+/// \defgroup PkgSpectralSegSalientCut Salient cut
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief The face sequence of a piece (thesis 6.3) and the search for the
+/// most salient cut along it (thesis 6.4.2).
+
+/// \namespace SpectralSeg::Salience
+/// \brief Part salience: terms and their weighted sum.
+
+/// \namespace SpectralSeg::Salient_cut
+/// \brief Face sequences and the salient-cut search.

@@ -1,0 +1,181 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file segmentability.h
+/// \brief Whether a piece of a mesh has parts: the four contour tests of the
+/// thesis (6.2.4, fig. 6.7) and the two sample faces they suggest (6.3.3).
+#ifndef SPECTRALSEG_SEGMENTABILITY_SEGMENTABILITY_H
+#define SPECTRALSEG_SEGMENTABILITY_SEGMENTABILITY_H
+
+#include <SpectralSeg/Mesh_piece.h>
+#include <SpectralSeg/Segmentability/Contour_analysis.h>
+#include <SpectralSeg/Segmentability/convexity.h>
+#include <SpectralSeg/Segmentability/inner_distances.h>
+#include <SpectralSeg/Segmentability/integrated_bending_score.h>
+#include <SpectralSeg/Segmentability/multidimensional_scaling.h>
+#include <SpectralSeg/Segmentability/principal_curvatures.h>
+#include <SpectralSeg/Segmentability/spectral_projection.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+namespace SpectralSeg {
+namespace Segmentability {
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief The four tests, in the order they are tried.
+enum class Test
+{
+  structure = 0,            ///< contour of the L projection
+  structure_normalized = 1, ///< the same contour re-embedded by MDS of its inner distances
+  geometry = 2,             ///< contour of the M projection
+  geometry_normalized = 3,  ///< the same contour re-embedded by MDS of its inner distances
+  none = 4                  ///< no test passed: the piece is a final part
+};
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief The name of a test: `"L"`, `"L-MDS"`, `"M"`, `"M-MDS"` or `"none"`.
+inline std::string test_name(Test t)
+{
+  static const char* names[] = {"L", "L-MDS", "M", "M-MDS", "none"};
+  return names[static_cast<int>(t)];
+}
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief Parameters of the segmentability test.
+struct Segmentability_options
+{
+  /// \f$\eta\f$: a piece is segmentable when a contour's score exceeds it
+  double threshold = 0.1;
+  /// only the L tests (the thesis's structure-only mode)
+  bool structure_only = false;
+  /// raster resolution, smoothing tolerance, contour size, \f$w_{cvx}\f$
+  Contour_options contour;
+  /// operators and eigensolver
+  Projection_options projection;
+};
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief What the segmentability test found.
+struct Segmentability_result
+{
+  /// whether a test passed
+  bool segmentable = false;
+  /// the test that passed (`Test::none` if none did)
+  Test test = Test::none;
+  /// score of the passing test, or the largest score of the tests run
+  double score = 0.;
+  /// the score of each test, NaN for the tests not run
+  std::array<double, 4> scores{{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+                                std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}};
+  /// the projection of the passing test (or of the last one run)
+  Planar_projection projection;
+  /// its contour analysis
+  Contour_analysis contour;
+  /// the projection behind `test`: structure for the L tests, geometry for the M tests
+  Projection projection_kind() const
+  {
+    return test == Test::geometry || test == Test::geometry_normalized ? Projection::geometry : Projection::structure;
+  }
+};
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief Tests whether a piece is segmentable (thesis fig. 6.7): the
+/// contours of the L projection, of its MDS re-embedding, of the M
+/// projection and of its MDS re-embedding are scored in turn with
+/// \f$S = 1 - \max(C_1, C_2^{w_{cvx}})\f$; the first score above
+/// \f$\eta\f$ makes the piece segmentable. With `structure_only`, only the
+/// L tests run.
+///
+/// \param piece a connected piece
+/// \param curvatures the mesh's principal curvatures (needed for the M tests)
+/// \param options \f$\eta\f$, modes and the contour and solver parameters
+inline Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
+                                                 const Segmentability_options& options = Segmentability_options())
+{
+  Segmentability_result r;
+  r.score = 0.;
+  const int projections = options.structure_only || !curvatures ? 1 : 2;
+  for(int p = 0; p < projections; ++p)
+  {
+    const Projection kind = p == 0 ? Projection::structure : Projection::geometry;
+    Planar_projection proj = spectral_projection(piece, kind, curvatures, options.projection);
+    Contour_analysis a = analyse_contour(proj.points, piece.triangles(), options.contour, true);
+    const Test plain = p == 0 ? Test::structure : Test::geometry;
+    const Test normalized = p == 0 ? Test::structure_normalized : Test::geometry_normalized;
+    r.scores[static_cast<std::size_t>(plain)] = a.score;
+    r.scores[static_cast<std::size_t>(normalized)] = a.normalized_score;
+    r.projection = std::move(proj);
+    r.contour = std::move(a);
+    for(Test t : {plain, normalized})
+    {
+      const double s = r.scores[static_cast<std::size_t>(t)];
+      if(std::isfinite(s))
+        r.score = std::max(r.score, s);
+      if(s > options.threshold)
+      {
+        r.segmentable = true;
+        r.test = t;
+        r.score = s;
+        return r;
+      }
+    }
+  }
+  return r;
+}
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief The two sample faces of a segmentable piece (thesis 6.3.3): on the
+/// contour that passed, the vertex of largest integrated bending score and
+/// the vertex farthest from it in inner distance; each is mapped to the
+/// piece vertex nearest to it in the projection, then to the face around
+/// that vertex whose centroid is nearest to it.
+///
+/// \return two local faces; they may coincide on degenerate contours
+/// \pre `result.segmentable`
+inline std::pair<Mesh_piece::size_type, Mesh_piece::size_type>
+bending_sample_faces(const Mesh_piece& piece, const Segmentability_result& result)
+{
+  const bool normalized = result.test == Test::structure_normalized || result.test == Test::geometry_normalized;
+  const Contour& c = normalized ? result.contour.normalized : result.contour.contour;
+  const Eigen::MatrixXd inner = normalized ? inner_distances(c) : result.contour.inner;
+  const std::pair<std::size_t, std::size_t> st = bending_samples(c, inner);
+  auto to_face = [&](std::size_t contour_vertex) {
+    const Eigen::Vector2d q = result.contour.contour[contour_vertex]; // in projection coordinates
+    Mesh_piece::size_type best_v = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for(Mesh_piece::size_type v = 0; v < result.projection.points.size(); ++v)
+    {
+      const double d = (result.projection.points[v] - q).squaredNorm();
+      if(d < best)
+      {
+        best = d;
+        best_v = v;
+      }
+    }
+    Mesh_piece::size_type best_f = 0;
+    best = std::numeric_limits<double>::infinity();
+    const Eigen::Vector3d& p = piece.point(best_v);
+    for(Mesh_piece::size_type f = 0; f < piece.number_of_faces(); ++f)
+    {
+      const auto& t = piece.triangles()[f];
+      if(t[0] != best_v && t[1] != best_v && t[2] != best_v)
+        continue;
+      const double d = (piece.geometry().centroids[piece.faces()[f]] - p).squaredNorm();
+      if(d < best)
+      {
+        best = d;
+        best_f = f;
+      }
+    }
+    return best_f;
+  };
+  return {to_face(st.first), to_face(st.second)};
+}
+
+} // namespace Segmentability
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_SEGMENTABILITY_SEGMENTABILITY_H

@@ -1,0 +1,305 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file automatic_segmentation.h
+/// \brief Segmentation into as many parts as the shape has, by recursive
+/// salient cuts of the pieces that pass the segmentability test (thesis ch. 6).
+#ifndef SPECTRALSEG_AUTOMATIC_SEGMENTATION_H
+#define SPECTRALSEG_AUTOMATIC_SEGMENTATION_H
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Execution.h>
+#include <SpectralSeg/Mesh_piece.h>
+#include <SpectralSeg/Metrics/Angular_weight.h>
+#include <SpectralSeg/Metrics/Blend.h>
+#include <SpectralSeg/Metrics/Geodesic_weight.h>
+#include <SpectralSeg/Part_hierarchy.h>
+#include <SpectralSeg/Refinement/morphological_closing.h>
+#include <SpectralSeg/Salience/Weighted_salience.h>
+#include <SpectralSeg/Salient_cut/face_sequence.h>
+#include <SpectralSeg/Salient_cut/salient_cut_search.h>
+#include <SpectralSeg/Segmentability/segmentability.h>
+#include <SpectralSeg/named_parameters.h>
+
+#include <chrono>
+#include <queue>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief Parameters of `segment_automatically()`; the defaults are the
+/// thesis's.
+/// \tparam SalienceModel a model of `Salience`
+template <typename SalienceModel = Salience::Thesis_salience>
+struct Automatic_segmentation_options
+{
+  /// \f$\eta\f$, structure-only mode, contour and eigensolver parameters (thesis 6.2)
+  Segmentability::Segmentability_options segmentability;
+  /// how cuts along the face sequence are scored (thesis 6.4)
+  SalienceModel salience = Salience::thesis_salience();
+  /// radii of the successive morphological closings of each cut (thesis
+  /// 6.4.3: 3-ring, then 1-ring); empty to keep the raw cut
+  std::vector<std::size_t> closing_rings{3, 1};
+  /// no more cuts once there are this many parts (0: no limit). Our
+  /// addition, a guard against runaway recursion on very bumpy meshes.
+  std::size_t max_parts = 64;
+  /// pieces with fewer faces are final parts without a test (our addition:
+  /// a few faces make no meaningful contour)
+  std::size_t min_piece_faces = 30;
+  /// no part smaller than this fraction of its connected component's area:
+  /// smaller pieces are not tested and cuts that would leave a smaller side
+  /// are not considered (our addition; 0, the thesis's behaviour, lets
+  /// small pieces be diced into slivers)
+  double min_part_area_fraction = 0.02;
+
+  /// the thesis's method as published: no part-size limit, no part budget
+  /// (pieces under `min_piece_faces` faces are still not tested)
+  static Automatic_segmentation_options thesis()
+  {
+    Automatic_segmentation_options o;
+    o.min_part_area_fraction = 0.;
+    o.max_parts = 0;
+    return o;
+  }
+};
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief What `segment_automatically()` produced.
+struct Automatic_segmentation_result
+{
+  /// one part per face, in `[0, number_of_segments)`, numbered by smallest face
+  std::vector<int> labels;
+  /// number of parts
+  std::size_t number_of_segments = 0;
+  /// every cut, with the tests and scores behind it
+  Part_hierarchy hierarchy;
+  /// seconds spent in each stage (summed over the pieces)
+  std::vector<std::pair<std::string, double>> timings;
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Accumulates the time spent in named stages.
+class Stage_totals
+{
+public:
+  explicit Stage_totals(std::vector<std::pair<std::string, double>>& t) : t_(t), clock_(std::chrono::steady_clock::now()) {}
+  void operator()(const std::string& stage)
+  {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - clock_).count();
+    clock_ = now;
+    for(auto& p : t_)
+      if(p.first == stage)
+      {
+        p.second += s;
+        return;
+      }
+    t_.emplace_back(stage, s);
+  }
+
+private:
+  std::vector<std::pair<std::string, double>>& t_;
+  std::chrono::steady_clock::time_point clock_;
+};
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief The weights of the graph on which faces are sequenced: geodesic
+/// and angular distance blended as in the part-aware metric without its
+/// volumetric term (\f$\alpha = 0.01\f$, \f$\beta = 0.195\f$, each
+/// normalised by its maximum), since pieces cut open have no enclosed
+/// volume (thesis 6.3).
+inline std::vector<double> sequence_weights(const Dual_graph& graph, const Execution& exec = Execution())
+{
+  return Metrics::make_blend(Metrics::Geodesic_weight(), 0.01, Metrics::Angular_weight(), 0.195)(graph, exec);
+}
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief Segments the faces of a dual graph by recursive two-way cuts
+/// driven by segmentability and salience (thesis fig. 6.1).
+///
+/// Each connected component of the graph is a first piece. The largest
+/// piece still pending is taken (ties: smallest first face):
+/// 1. `Segmentability::test_segmentability()`: if no contour test passes,
+///    the piece is a final part;
+/// 2. `Segmentability::bending_sample_faces()` picks two faces on different
+///    parts, `Salient_cut::face_sequence()` orders the faces between them on
+///    the graph weighted by `weights`;
+/// 3. `Salient_cut::salient_cut_search()` finds the most salient prefix,
+///    with the salience weights of the projection that passed;
+/// 4. `Refinement::enhance_cut_boundary()` smooths the cut and makes each
+///    side connected; both sides go back to the queue.
+///
+/// Pieces under `options.min_piece_faces` faces and pieces left when
+/// `options.max_parts` is reached become parts without a test.
+///
+/// \param graph the dual graph of the mesh (outward-oriented faces)
+/// \param weights one weight per dual edge, for the face sequences (default
+///        `sequence_weights()`)
+/// \param options thresholds, modes and the salience model
+/// \param exec threads (the two Dijkstra runs of each sequence) and progress
+///        (stage "automatic segmentation": the fraction of the area settled)
+/// \throws Invalid_input if `weights` does not have one valid value per dual edge
+/// \throws Operation_cancelled if the progress callback asks to stop
+template <typename SalienceModel>
+Automatic_segmentation_result segment_automatically(const Dual_graph& graph, const std::vector<double>& weights,
+                                                    const Automatic_segmentation_options<SalienceModel>& options,
+                                                    const Execution& exec = Execution())
+{
+  Metrics::check_weights(graph, weights);
+  Automatic_segmentation_result r;
+  internal::Stage_totals lap(r.timings);
+  const std::size_t n = graph.number_of_faces();
+  Part_hierarchy& h = r.hierarchy;
+  h.number_of_faces = n;
+  const char* stage = "automatic segmentation";
+  exec.report(stage, 0.);
+
+  Segmentability::Principal_curvatures curvatures;
+  const bool geometry = !options.segmentability.structure_only;
+  if(geometry)
+    curvatures = Segmentability::principal_curvatures(graph);
+  lap("curvatures");
+
+  // one root per connected component
+  h.roots.clear();
+  {
+    std::vector<std::vector<std::uint32_t>> comp(graph.number_of_components());
+    for(std::uint32_t f = 0; f < n; ++f)
+      comp[graph.component_of_faces()[f]].push_back(f);
+    for(auto& c : comp)
+    {
+      Part_node node;
+      node.faces = std::move(c);
+      for(std::uint32_t f : node.faces)
+        node.area += graph.geometry().areas[f];
+      h.roots.push_back(h.nodes.size());
+      h.nodes.push_back(std::move(node));
+    }
+  }
+  const auto larger = [&](std::size_t a, std::size_t b) { // priority: larger area, then smaller first face
+    const Part_node& x = h.nodes[a];
+    const Part_node& y = h.nodes[b];
+    if(x.area != y.area)
+      return x.area < y.area;
+    return x.faces.front() > y.faces.front();
+  };
+  std::priority_queue<std::size_t, std::vector<std::size_t>, decltype(larger)> queue(larger);
+  for(std::size_t i : h.roots)
+    queue.push(i);
+
+  double total_area = 0., settled = 0.;
+  for(std::size_t i : h.roots)
+    total_area += h.nodes[i].area;
+  std::size_t parts = h.roots.size(), cuts = 0;
+  SalienceModel salience = options.salience;
+  while(!queue.empty())
+  {
+    const std::size_t i = queue.top();
+    queue.pop();
+    auto settle = [&]() {
+      settled += h.nodes[i].area;
+      exec.report(stage, total_area > 0. ? settled / total_area : 1.);
+    };
+    std::size_t root = i;
+    while(h.nodes[root].parent != Part_node::none)
+      root = h.nodes[root].parent;
+    const double min_area = options.min_part_area_fraction * h.nodes[root].area;
+    if((options.max_parts > 0 && parts >= options.max_parts) ||
+       h.nodes[i].faces.size() < std::max<std::size_t>(options.min_piece_faces, 2) || h.nodes[i].area < 2. * min_area)
+    {
+      settle();
+      continue;
+    }
+    const Mesh_piece piece(graph, h.nodes[i].faces);
+    lap("pieces");
+    const Segmentability::Segmentability_result test =
+      Segmentability::test_segmentability(piece, geometry ? &curvatures : nullptr, options.segmentability);
+    lap("segmentability");
+    {
+      Part_node& node = h.nodes[i];
+      node.tested = true;
+      node.test = test.test;
+      node.score = test.score;
+      node.scores = test.scores;
+    }
+    if(!test.segmentable)
+    {
+      settle();
+      continue;
+    }
+    std::pair<Mesh_piece::size_type, Mesh_piece::size_type> st = Segmentability::bending_sample_faces(piece, test);
+    if(st.first == st.second)
+    {
+      // a degenerate contour: the face farthest from the first sample
+      const std::vector<double> d = Salient_cut::piece_distances(piece, weights, st.first);
+      double best = -1.;
+      for(Mesh_piece::size_type f = 0; f < d.size(); ++f)
+        if(std::isfinite(d[f]) && d[f] > best)
+        {
+          best = d[f];
+          st.second = f;
+        }
+    }
+    if(st.first == st.second)
+    {
+      settle();
+      continue;
+    }
+    const Salient_cut::Face_sequence seq = Salient_cut::face_sequence(piece, weights, st.first, st.second, exec);
+    lap("face sequence");
+    Salient_cut::Salient_cut cut = Salient_cut::salient_cut_search(piece, seq.order, salience, test.projection_kind(), false, min_area);
+    if(cut.position == 0)
+    {
+      settle();
+      continue;
+    }
+    lap("cut search");
+    if(!options.closing_rings.empty())
+      Refinement::enhance_cut_boundary(piece, cut.side, options.closing_rings);
+    else
+      Refinement::make_cut_sides_connected(piece, cut.side);
+    lap("boundary enhancement");
+    std::array<Part_node, 2> child;
+    for(Mesh_piece::size_type f = 0; f < piece.number_of_faces(); ++f)
+    {
+      Part_node& c = child[cut.side[f] ? 0 : 1];
+      c.faces.push_back(piece.faces()[f]);
+      c.area += piece.face_area(f);
+    }
+    if(child[0].faces.empty() || child[1].faces.empty())
+    {
+      settle();
+      continue;
+    }
+    Part_node& node = h.nodes[i];
+    node.cut_salience = cut.salience;
+    node.cut_order = cuts++;
+    node.samples = {piece.faces()[st.first], piece.faces()[st.second]};
+    const std::size_t depth = node.depth + 1;
+    for(int c = 0; c < 2; ++c)
+    {
+      std::sort(child[c].faces.begin(), child[c].faces.end());
+      child[c].parent = i;
+      child[c].depth = depth;
+      h.nodes[i].children[c] = h.nodes.size();
+      queue.push(h.nodes.size());
+      h.nodes.push_back(std::move(child[c]));
+    }
+    ++parts;
+  }
+  r.labels = h.labels();
+  r.number_of_segments = h.number_of_parts();
+  exec.report(stage, 1.);
+  return r;
+}
+
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_AUTOMATIC_SEGMENTATION_H

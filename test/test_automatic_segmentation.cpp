@@ -1,0 +1,296 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Automatic segmentation (thesis ch. 6): segmentability of known shapes,
+// bending samples, O(1) salience updates, closing, hierarchy, threads.
+#include "test_meshes.h"
+
+#include <SpectralSeg/automatic_segmentation.h>
+#include <SpectralSeg/Refinement/connected_segments.h>
+#include <SpectralSeg/evaluation.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <catch2/catch.hpp>
+
+#include <numeric>
+#include <random>
+#include <map>
+#include <set>
+
+namespace {
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+using namespace SpectralSeg;
+
+struct Shape
+{
+  explicit Shape(test_meshes::Soup s)
+    : soup(std::move(s)), mesh(test_meshes::to_mesh<Mesh>(soup)), graph(make_dual_graph(mesh)),
+      curvatures(Segmentability::principal_curvatures(graph))
+  {
+    all.resize(graph.number_of_faces());
+    std::iota(all.begin(), all.end(), 0u);
+  }
+  test_meshes::Soup soup;
+  Mesh mesh;
+  Dual_graph graph;
+  Segmentability::Principal_curvatures curvatures;
+  std::vector<Mesh_piece::size_type> all;
+  Mesh_piece piece() const { return Mesh_piece(graph, all); }
+};
+
+const Shape& star()
+{
+  static const Shape s(test_meshes::star(2));
+  return s;
+}
+
+// From-scratch salience terms of the prefix order[0..i), for comparison.
+std::array<double, 3> terms_from_scratch(const Mesh_piece& piece, const std::vector<Mesh_piece::size_type>& order,
+                                         std::size_t count, const Salience::Boundary_strength_term& b)
+{
+  std::vector<std::uint8_t> in(piece.number_of_faces(), 0);
+  double area = 0.;
+  for(std::size_t i = 0; i < count; ++i)
+  {
+    in[order[i]] = 1;
+    area += piece.face_area(order[i]);
+  }
+  const double smaller = std::min(area, piece.area() - area);
+  double length = 0., weighted = 0., wmax = 0.;
+  std::set<Mesh_piece::size_type> vertices;
+  for(const Mesh_piece::Edge& e : piece.edges())
+  {
+    const double w = b.edge_weight(piece.graph().edge(e.dual_edge));
+    wmax = std::max(wmax, w);
+    if(in[e.face[0]] != in[e.face[1]])
+    {
+      const double l = piece.graph().edge(e.dual_edge).length;
+      length += l;
+      weighted += l * w;
+      vertices.insert(e.vertex[0]);
+      vertices.insert(e.vertex[1]);
+    }
+  }
+  std::array<double, 3> t{{smaller / piece.area(), 0., 0.}};
+  if(length > 0. && wmax > 0.)
+    t[1] = weighted / (length * wmax);
+  if(vertices.size() >= 2 && smaller > 0.)
+  {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for(auto v : vertices)
+      mean += piece.point(v);
+    mean /= double(vertices.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for(auto v : vertices)
+      cov += (piece.point(v) - mean) * (piece.point(v) - mean).transpose();
+    cov /= double(vertices.size());
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    const double base = 4. * std::sqrt(std::max(0., es.eigenvalues()(2)) * std::max(0., es.eigenvalues()(1)));
+    t[2] = base <= smaller ? 1. - base / smaller : 0.;
+  }
+  return t;
+}
+
+// Records the term values at every position of the search.
+struct Recording_salience : Salience::Thesis_salience
+{
+  Recording_salience() : Salience::Thesis_salience(Salience::thesis_salience()) {}
+  double value(const Salience::Cut_state& s, Salience::Projection p) const
+  {
+    values.push_back(term_values(s));
+    return Salience::Thesis_salience::value(s, p);
+  }
+  mutable std::vector<std::array<double, 3>> values;
+};
+} // namespace
+
+TEST_CASE("segmentability: a sphere and a box are not segmentable, a star and a T are", "[automatic]")
+{
+  const Segmentability::Segmentability_options options;
+  for(const auto& soup : {test_meshes::sphere(1., 24, 48), test_meshes::welded(test_meshes::box(2., 1.5, 1., 8))})
+  {
+    const Shape s(soup);
+    const Segmentability::Segmentability_result r = Segmentability::test_segmentability(s.piece(), &s.curvatures, options);
+    INFO("faces " << s.graph.number_of_faces() << " scores " << r.scores[0] << " " << r.scores[1] << " " << r.scores[2]
+                  << " " << r.scores[3]);
+    CHECK_FALSE(r.segmentable);
+    CHECK(r.test == Segmentability::Test::none);
+    CHECK(r.score < options.threshold);
+    for(double x : r.scores)
+      CHECK(x < options.threshold);
+  }
+  for(const auto& soup : {test_meshes::star(2), test_meshes::t_shape(2)})
+  {
+    const Shape s(soup);
+    const Segmentability::Segmentability_result r = Segmentability::test_segmentability(s.piece(), &s.curvatures, options);
+    INFO("scores " << r.scores[0] << " " << r.scores[1] << " " << r.scores[2] << " " << r.scores[3]);
+    CHECK(r.segmentable);
+    CHECK(r.score > options.threshold);
+    CHECK(r.test == Segmentability::Test::structure); // branching shows in the L projection itself
+  }
+}
+
+TEST_CASE("bending samples land on two different limbs of the star", "[automatic]")
+{
+  const Shape& s = star();
+  const Mesh_piece piece = s.piece();
+  const auto r = Segmentability::test_segmentability(piece, &s.curvatures);
+  REQUIRE(r.segmentable);
+  const auto st = Segmentability::bending_sample_faces(piece, r);
+  const int a = s.soup.face_part[piece.faces()[st.first]], b = s.soup.face_part[piece.faces()[st.second]];
+  INFO("parts " << a << " " << b);
+  CHECK(a != 0);
+  CHECK(b != 0);
+  CHECK(a != b);
+  // the sequence runs from one sample to the other (faces beyond a sample,
+  // seen from the other, tie with it)
+  const auto seq = Salient_cut::face_sequence(piece, sequence_weights(s.graph), st.first, st.second);
+  CHECK(seq.key[st.first] <= seq.key[seq.order.front()] + 1e-9);
+  CHECK(seq.key[st.second] >= seq.key[seq.order.back()] - 1e-9);
+  CHECK(seq.key[st.first] < seq.key[st.second]);
+}
+
+TEST_CASE("O(1) salience updates equal a recomputation at every position", "[automatic]")
+{
+  const Shape& s = star();
+  const Mesh_piece piece = s.piece();
+  std::mt19937 rng(7);
+  std::vector<std::vector<Mesh_piece::size_type>> orders;
+  // a random permutation (disconnected sides, many boundary changes) and a
+  // real face sequence
+  std::vector<Mesh_piece::size_type> random(s.all);
+  std::shuffle(random.begin(), random.end(), rng);
+  orders.push_back(random);
+  orders.push_back(Salient_cut::face_sequence(piece, sequence_weights(s.graph), 0, piece.number_of_faces() - 1).order);
+  for(const auto& order : orders)
+  {
+    Recording_salience salience;
+    const auto cut = Salient_cut::salient_cut_search(piece, order, salience, Salience::Projection::structure, true);
+    REQUIRE(salience.values.size() == order.size() - 1);
+    REQUIRE(cut.curve.size() == order.size() - 1);
+    const Salience::Boundary_strength_term b;
+    double worst = 0.;
+    for(std::size_t i = 1; i < order.size(); i += (i < 200 ? 1 : 7))
+    {
+      const auto expected = terms_from_scratch(piece, order, i, b);
+      for(int t = 0; t < 3; ++t)
+        worst = std::max(worst, std::abs(expected[std::size_t(t)] - salience.values[i - 1][std::size_t(t)]));
+    }
+    CHECK(worst < 1e-9);
+    // the reported cut is the maximum of the curve
+    CHECK(cut.salience == Approx(*std::max_element(cut.curve.begin(), cut.curve.end())));
+    std::size_t before = 0;
+    for(auto x : cut.side)
+      before += x;
+    CHECK(before == cut.position);
+  }
+}
+
+TEST_CASE("closing removes a one-face notch from a straight cut", "[automatic]")
+{
+  const Shape s(test_meshes::square_strip(20));
+  const Mesh_piece piece = s.piece();
+  // faces 2i, 2i+1 form square i; cut between squares 9 and 10, then flip
+  // the single lower triangle of square 10 to the other side: a notch
+  std::vector<std::uint8_t> side(piece.number_of_faces(), 0);
+  for(std::size_t f = 0; f < 20; ++f)
+    side[f] = 1;
+  std::vector<std::uint8_t> notched = side;
+  notched[20] = 1;
+  const std::size_t moved = Refinement::close_cut_boundary(piece, notched, 1);
+  CHECK(moved == 1);
+  CHECK(notched == side);
+  // a straight cut is left alone
+  std::vector<std::uint8_t> straight = side;
+  CHECK(Refinement::close_cut_boundary(piece, straight, 1) == 0);
+  CHECK(straight == side);
+  // an island of one side inside the other ends up connected
+  std::vector<std::uint8_t> island = side;
+  island[30] = 1;
+  Refinement::make_cut_sides_connected(piece, island);
+  CHECK(island == side);
+}
+
+TEST_CASE("automatic segmentation of the star: parts, hierarchy, threads", "[automatic]")
+{
+  const Shape& s = star();
+  const std::vector<double> w = sequence_weights(s.graph);
+  Automatic_segmentation_options<> options;
+  const Automatic_segmentation_result r = segment_automatically(s.graph, w, options, Execution(1));
+  INFO("segments " << r.number_of_segments);
+  CHECK(r.number_of_segments >= 5);
+  CHECK(r.number_of_segments <= 30);
+  // the first cut takes one whole limb off the body
+  {
+    const Part_node& root = r.hierarchy.nodes[r.hierarchy.roots[0]];
+    REQUIRE_FALSE(root.is_leaf());
+    CHECK(root.test == Segmentability::Test::structure);
+    const Part_node& a = r.hierarchy.nodes[root.children[0]];
+    const Part_node& b = r.hierarchy.nodes[root.children[1]];
+    const Part_node& limb = a.area < b.area ? a : b;
+    std::map<int, std::size_t> parts;
+    for(auto f : limb.faces)
+      ++parts[s.soup.face_part[f]];
+    std::size_t most = 0;
+    for(const auto& p : parts)
+      most = std::max(most, p.second);
+    CHECK(parts.count(0) == 0);
+    CHECK(double(most) >= 0.95 * double(limb.faces.size()));
+    CHECK(double(limb.faces.size()) >= 0.9 * 416.); // a limb has 416 faces
+  }
+  // no part under the area limit
+  double total = 0.;
+  for(std::size_t f = 0; f < s.graph.number_of_faces(); ++f)
+    total += s.graph.geometry().areas[f];
+  for(const Part_node& n : r.hierarchy.nodes)
+    if(n.is_leaf())
+      CHECK(n.area >= options.min_part_area_fraction * total * (1. - 1e-9));
+  // flat labels and hierarchy agree
+  const Part_hierarchy& h = r.hierarchy;
+  CHECK(h.number_of_parts() == r.number_of_segments);
+  CHECK(h.labels() == r.labels);
+  std::size_t leaves = 0, covered = 0;
+  for(const Part_node& n : h.nodes)
+  {
+    if(n.is_leaf())
+    {
+      ++leaves;
+      covered += n.faces.size();
+      const int l = r.labels[n.faces.front()];
+      for(auto f : n.faces)
+        CHECK(r.labels[f] == l);
+    }
+    else
+    {
+      CHECK(n.tested);
+      CHECK(n.test != Segmentability::Test::none);
+      CHECK(n.score > options.segmentability.threshold);
+      const Part_node& a = h.nodes[n.children[0]];
+      const Part_node& b = h.nodes[n.children[1]];
+      CHECK(a.faces.size() + b.faces.size() == n.faces.size());
+      CHECK(a.area + b.area == Approx(n.area));
+      CHECK(a.depth == n.depth + 1);
+    }
+  }
+  CHECK(leaves == r.number_of_segments);
+  CHECK(covered == s.graph.number_of_faces());
+  CHECK(h.labels_with_parts(1) == std::vector<int>(s.graph.number_of_faces(), 0));
+  const auto two = h.labels_with_parts(2);
+  CHECK(*std::max_element(two.begin(), two.end()) == 1);
+  CHECK(h.labels_with_parts(1000) == r.labels);
+  CHECK(h.labels_at_depth(0) == std::vector<int>(s.graph.number_of_faces(), 0));
+  // every part is connected
+  std::vector<int> labels = r.labels;
+  CHECK(Refinement::make_segments_connected(s.graph, labels) == r.number_of_segments);
+  // threads do not change anything
+  const Automatic_segmentation_result r2 = segment_automatically(s.graph, w, options, Execution(2));
+  CHECK(r2.labels == r.labels);
+  // structure-only mode runs L tests only
+  options.segmentability.structure_only = true;
+  const Automatic_segmentation_result r3 = segment_automatically(s.graph, w, options);
+  for(const Part_node& n : r3.hierarchy.nodes)
+    if(n.tested)
+      CHECK(std::isnan(n.scores[2]));
+}
