@@ -18,6 +18,7 @@
 #include <SpectralSeg/Salient_cut/face_sequence.h>
 #include <SpectralSeg/Salient_cut/salient_cut_search.h>
 #include <SpectralSeg/Segmentability/segmentability.h>
+#include <SpectralSeg/k_way_segmentation.h>
 #include <SpectralSeg/named_parameters.h>
 
 #include <chrono>
@@ -298,6 +299,132 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
   r.number_of_segments = h.number_of_parts();
   exec.report(stage, 1.);
   return r;
+}
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief The methods of `automatic_segmentation()`.
+enum class Automatic_method
+{
+  /// over-segment and merge across weak boundaries
+  /// (`segment_k_way_automatic()`, our method): the default, the best on
+  /// psb-dev (figures in doc/benchmarks.md)
+  merge,
+  /// recursive salient cuts of the segmentable pieces
+  /// (`segment_automatically()`, the thesis's chapter 6)
+  salient_cuts
+};
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief Segments a triangle mesh into as many parts as it finds, and
+/// returns their number.
+///
+/// With `Automatic_method::salient_cuts` (thesis ch. 6) the mesh is cut in
+/// two recursively, largest piece first, while a piece passes the
+/// segmentability test, each time at the most salient place along a face
+/// sequence (`segment_automatically()`); the cuts are kept in a
+/// `Part_hierarchy` that `part_hierarchy` receives. With
+/// `Automatic_method::merge` (the default) the mesh is over-segmented by
+/// spectral clustering and segments are merged across weak boundaries
+/// (`k_way_segmentation_automatic()`, whose named parameters apply).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///         with triangle faces oriented outward
+/// \tparam SegmentMap a model of `WritablePropertyMap` with the face
+///         descriptor as key type and an integer type as value type
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param tm the mesh
+/// \param segments receives the part of each face, in `[0, returned value)`,
+///        numbered by smallest face; each part is one connected region
+/// \param np an optional sequence of named parameters among those below;
+///        with `Automatic_method::merge`, those of
+///        `k_way_segmentation_automatic()` too
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{automatic_method}
+///     \cgalParamDescription{the method}
+///     \cgalParamType{`Automatic_method`}
+///     \cgalParamDefault{`Automatic_method::merge`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{automatic_options}
+///     \cgalParamDescription{every parameter of the salient-cut method (contour resolution, eigensolver, closing radii, part budget, salience model with its weights); the parameters below, when given, replace the fields they name}
+///     \cgalParamType{`Automatic_segmentation_options<SalienceModel>`}
+///     \cgalParamDefault{`Automatic_segmentation_options<>()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{segmentability_threshold}
+///     \cgalParamDescription{\f$\eta\f$: a piece is cut when a contour's segmentability score exceeds it (thesis 6.2.4)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{structure_only}
+///     \cgalParamDescription{only the L-projection tests (the thesis's structure-only mode, 6.5)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{min_part_area_fraction}
+///     \cgalParamDescription{no part under this fraction of its connected component's area (our addition; 0 for the thesis's behaviour)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.02}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{part_hierarchy}
+///     \cgalParamDescription{receives the hierarchy of cuts (salient-cut method; left empty by the merge method)}
+///     \cgalParamType{`Part_hierarchy*`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads; 0 means all hardware threads. The result does not depend on it}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called with each stage's name and done fraction; returning `false` cancels (`Operation_cancelled`)}
+///     \cgalParamType{`SpectralSeg::Progress_callback`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}
+///     \cgalParamDescription{the vertex positions and the numbering of vertices and faces, as for `extract_mesh_geometry()`}
+///     \cgalParamType{property maps as for `extract_mesh_geometry()`}
+///     \cgalParamDefault{the mesh's internal maps}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// Meshes with several connected components: each component is segmented
+/// on its own (the salient-cut method starts with one piece per component).
+/// \throws Invalid_input for a non-triangle face, a non-finite coordinate or
+///         an invalid parameter
+/// \throws Operation_cancelled if the progress callback asks to stop
+template <typename TriangleMesh, typename SegmentMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t automatic_segmentation(const TriangleMesh& tm, SegmentMap segments,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Automatic_method method =
+    choose_parameter(get_parameter(np, SpectralSeg::internal_np::automatic_method), Automatic_method::merge);
+  if(method == Automatic_method::merge)
+    return k_way_segmentation_automatic(tm, segments, np);
+  auto o = choose_parameter(get_parameter(np, SpectralSeg::internal_np::automatic_options),
+                            Automatic_segmentation_options<>());
+  o.segmentability.threshold = choose_parameter(get_parameter(np, SpectralSeg::internal_np::segmentability_threshold),
+                                                o.segmentability.threshold);
+  o.segmentability.structure_only =
+    choose_parameter(get_parameter(np, SpectralSeg::internal_np::structure_only), o.segmentability.structure_only);
+  o.min_part_area_fraction =
+    choose_parameter(get_parameter(np, SpectralSeg::internal_np::min_part_area_fraction), o.min_part_area_fraction);
+  if(!(o.segmentability.threshold >= 0.) || !std::isfinite(o.segmentability.threshold))
+    throw Invalid_input("automatic segmentation: the segmentability threshold must be finite and non-negative");
+  if(!(o.min_part_area_fraction >= 0.) || !(o.min_part_area_fraction < 0.5))
+    throw Invalid_input("automatic segmentation: the minimum part area fraction must be in [0, 0.5)");
+  const Execution exec = internal::execution_from(np);
+  const Dual_graph graph = make_dual_graph(tm, np);
+  Automatic_segmentation_result r = segment_automatically(graph, sequence_weights(graph, exec), o, exec);
+  internal::put_labels(tm, r.labels, segments, np);
+  Part_hierarchy* out = choose_parameter(get_parameter(np, SpectralSeg::internal_np::part_hierarchy),
+                                         static_cast<Part_hierarchy*>(nullptr));
+  if(out)
+    *out = std::move(r.hierarchy);
+  return r.number_of_segments;
 }
 
 } // namespace SpectralSeg

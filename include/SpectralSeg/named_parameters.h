@@ -33,7 +33,13 @@ namespace internal_np {
   P(boundary_enhancement_t, boundary_enhancement) \
   P(k_way_options_t, k_way_options) \
   P(max_number_of_segments_t, max_number_of_segments) \
-  P(min_boundary_contrast_t, min_boundary_contrast)
+  P(min_boundary_contrast_t, min_boundary_contrast) \
+  P(automatic_method_t, automatic_method) \
+  P(automatic_options_t, automatic_options) \
+  P(segmentability_threshold_t, segmentability_threshold) \
+  P(structure_only_t, structure_only) \
+  P(min_part_area_fraction_t, min_part_area_fraction) \
+  P(part_hierarchy_t, part_hierarchy)
 
 #define SPECTRALSEG_DECLARE_TAG(X, Y) enum X { Y };
 SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_DECLARE_TAG)

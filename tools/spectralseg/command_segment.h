@@ -6,6 +6,7 @@
 
 #include "Loaded_mesh.h"
 #include "metric_choice.h"
+#include "salient_cut_segmentation.h"
 
 #include <SpectralSeg/IO/write_colored_mesh.h>
 #include <SpectralSeg/IO/write_face_values.h>
@@ -41,6 +42,7 @@ struct Segment_options
   std::size_t extra_clusters = SpectralSeg::K_way_options().extra_clusters;
   double min_boundary_contrast = 3.;
   std::string labels, out_mesh, png, json;
+  Salient_cut_options salient;
 };
 
 inline void add_segment_command(CLI::App& app, Segment_options& o)
@@ -76,10 +78,75 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
   cmd->add_option("--extra-clusters", o.extra_clusters,
                   "K-means makes k + N clusters, then the segments with the weakest (least concave) boundaries "
                   "are merged until k are left (0: the thesis's method)")->capture_default_str();
+  add_salient_cut_options(*cmd, o.salient);
   cmd->add_option("--labels", o.labels, "output: one segment label per face of the file, in file order")->required();
   cmd->add_option("--mesh", o.out_mesh, "output: the mesh with one colour per segment (.ply or .off)");
   cmd->add_option("--png", o.png, "output: picture of the segments");
   cmd->add_option("--json", o.json, "output: report with the stage timings, segments and their areas");
+}
+
+// The outputs of `segment`: labels, coloured mesh, picture, JSON report.
+template <typename Lap>
+int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const std::vector<int>& labels,
+                          const SpectralSeg::Execution& exec, const std::string& metric, nlohmann::ordered_json& report,
+                          const std::vector<std::pair<std::string, double>>& timings, Lap& lap)
+{
+  const std::size_t n = labels.size();
+  const std::size_t segments = labels.empty() ? 0 : std::size_t(*std::max_element(labels.begin(), labels.end()) + 1);
+  SpectralSeg::IO::write_face_values(o.labels, SpectralSeg::IO::values_in_input_order(m.report, labels, -1));
+  std::cout << "segments: " << segments << "\nlabels: " << o.labels << "\n";
+  if(!o.out_mesh.empty())
+  {
+    SpectralSeg::IO::write_colored_mesh(o.out_mesh, m.graph.geometry(), SpectralSeg::Rendering::label_colors(labels));
+    std::cout << "mesh: " << o.out_mesh << "\n";
+  }
+  if(!o.png.empty())
+  {
+    SpectralSeg::Rendering::render_face_labels_png(o.png, m.graph.geometry(), labels);
+    std::cout << "png: " << o.png << "\n";
+  }
+  lap("write");
+
+  if(!o.json.empty())
+  {
+    std::vector<double> areas(segments, 0.);
+    std::vector<std::size_t> counts(segments, 0);
+    for(std::size_t f = 0; f < n; ++f)
+    {
+      areas[std::size_t(labels[f])] += m.graph.geometry().areas[f];
+      ++counts[std::size_t(labels[f])];
+    }
+    nlohmann::ordered_json head;
+    head["mesh"] = o.mesh;
+    head["faces"] = n;
+    head["k"] = o.k == "auto" ? nlohmann::ordered_json("auto") : nlohmann::ordered_json(std::stoul(o.k));
+    head["segments"] = segments;
+    for(auto it = report.begin(); it != report.end(); ++it)
+      head[it.key()] = it.value();
+    report = std::move(head);
+    if(!metric.empty())
+      report["metric"] = metric;
+    report["threads"] = exec.threads();
+    nlohmann::ordered_json segs = nlohmann::json::array();
+    for(std::size_t s = 0; s < segments; ++s)
+      segs.push_back({{"label", s}, {"faces", counts[s]}, {"area", areas[s]}});
+    report["segment_list"] = segs;
+    nlohmann::ordered_json t;
+    double total = 0;
+    for(const auto& st : timings)
+    {
+      t[st.first] = st.second;
+      total += st.second;
+    }
+    t["total"] = total;
+    report["timings_seconds"] = t;
+    std::ofstream js(o.json);
+    if(!js)
+      throw SpectralSeg::Io_error("cannot write '" + o.json + "'");
+    js << report.dump(2) << "\n";
+    std::cout << "json: " << o.json << "\n";
+  }
+  return 0;
 }
 
 inline int run_segment(const Segment_options& o, Progress_printer& out)
@@ -121,6 +188,12 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     throw SpectralSeg::Invalid_input("--k " + std::to_string(k) + " is larger than the number of faces (" +
                                      std::to_string(n) + ")");
   const SpectralSeg::Execution exec(o.threads, out.callback());
+  if(k == 0 && o.salient.method == "salient-cuts")
+  {
+    std::vector<int> labels = run_salient_cuts(o.salient, m.graph, exec, report, timings);
+    t0 = clock::now();
+    return write_segment_outputs(o, m, labels, exec, "", report, timings, lap);
+  }
   const SpectralSeg::Metrics::Any_weight metric = make_metric(o.metric);
   const std::vector<double> weights = metric(m.graph, exec);
   const SpectralSeg::Weighted_dual_graph weighted(m.graph, weights);
@@ -156,60 +229,12 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     timings.push_back(t);
   t0 = clock::now();
 
-  SpectralSeg::IO::write_face_values(o.labels, SpectralSeg::IO::values_in_input_order(m.report, r.labels, -1));
-  std::cout << "segments: " << r.number_of_segments << "\nlabels: " << o.labels << "\n";
-  if(!o.out_mesh.empty())
-  {
-    SpectralSeg::IO::write_colored_mesh(o.out_mesh, m.graph.geometry(), SpectralSeg::Rendering::label_colors(r.labels));
-    std::cout << "mesh: " << o.out_mesh << "\n";
-  }
-  if(!o.png.empty())
-  {
-    SpectralSeg::Rendering::render_face_labels_png(o.png, m.graph.geometry(), r.labels);
-    std::cout << "png: " << o.png << "\n";
-  }
-  lap("write");
-
-  if(!o.json.empty())
-  {
-    std::vector<double> areas(r.number_of_segments, 0.);
-    std::vector<std::size_t> counts(r.number_of_segments, 0);
-    for(std::size_t f = 0; f < n; ++f)
-    {
-      areas[std::size_t(r.labels[f])] += m.graph.geometry().areas[f];
-      ++counts[std::size_t(r.labels[f])];
-    }
-    report["mesh"] = o.mesh;
-    report["faces"] = n;
-    report["k"] = k == 0 ? nlohmann::ordered_json("auto") : nlohmann::ordered_json(k);
-    report["segments"] = r.number_of_segments;
-    report["metric"] = metric.name();
-    report["kernel"] = o.kernel;
-    report["embedding"] = r.embedding.exact ? "exact" : "nystrom";
-    report["samples"] = r.embedding.samples;
-    report["kernel_width"] = r.embedding.kernel_width;
-    report["threads"] = exec.threads();
-    report["graph_cut"] = !o.no_graph_cut;
-    nlohmann::ordered_json segs = nlohmann::json::array();
-    for(std::size_t s = 0; s < r.number_of_segments; ++s)
-      segs.push_back({{"label", s}, {"faces", counts[s]}, {"area", areas[s]}});
-    report["segment_list"] = segs;
-    nlohmann::ordered_json t;
-    double total = 0;
-    for(const auto& st : timings)
-    {
-      t[st.first] = st.second;
-      total += st.second;
-    }
-    t["total"] = total;
-    report["timings_seconds"] = t;
-    std::ofstream js(o.json);
-    if(!js)
-      throw SpectralSeg::Io_error("cannot write '" + o.json + "'");
-    js << report.dump(2) << "\n";
-    std::cout << "json: " << o.json << "\n";
-  }
-  return 0;
+  report["kernel"] = o.kernel;
+  report["embedding"] = r.embedding.exact ? "exact" : "nystrom";
+  report["samples"] = r.embedding.samples;
+  report["kernel_width"] = r.embedding.kernel_width;
+  report["graph_cut"] = !o.no_graph_cut;
+  return write_segment_outputs(o, m, r.labels, exec, metric.name(), report, timings, lap);
 }
 
 } // namespace spectralseg_cli
