@@ -9,8 +9,10 @@
 // humans, then over the models).
 //
 // usage: bench_psb_quality PSB_DIR [options]
-//   --methods kway,auto,sdf methods to run (default kway): k-way with the humans' k, k-way choosing k
-//                           itself (segment_k_way_automatic), CGAL's SDF segmentation (the peer)
+//   --methods kway,auto,salient,sdf methods to run (default kway): k-way with the humans' k, k-way
+//                           choosing k itself (segment_k_way_automatic), the thesis's recursive salient
+//                           cuts (segment_automatically, ch. 6), CGAL's SDF segmentation (the peer)
+//   --eta E  --min-part-area F  --structure-only   parameters of the salient-cut method
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --shard i/N             run only the models whose row number is i mod N
@@ -27,6 +29,7 @@
 //   --mu M         graph-cut smoothness (default 0.3)   --mean-edge   --max-min-seeds
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/automatic_segmentation.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
@@ -76,7 +79,12 @@ struct Options
   std::size_t shard = 0, shards = 1;
   double alpha = 0.01, beta = 0.195, gamma = 0.795;
   bool graph_cut = true;
-  std::string sampling = "auto", kernel = "exponential", ray_caster = "aabb";
+  std::string sampling = "auto", kernel = "exponential", ray_caster =
+#ifdef SPECTRALSEG_HAS_EMBREE
+    "embree";
+#else
+    "aabb";
+#endif
   unsigned threads = 0;
   std::string normalization = "p99"; // p99 (the library's default) or max (the thesis)
   std::size_t samples = 0;
@@ -88,6 +96,8 @@ struct Options
   std::string png_dir;       // pictures of the best and worst models of each method
   double samples_factor = 0; // experiment: Nyström samples = factor * k + 1
   double vsi_fraction = 0.01;
+  double eta = 0.1, min_part_area = SpectralSeg::Automatic_segmentation_options<>().min_part_area_fraction;
+  bool structure_only = false;
   std::size_t auto_k = 0; // > 0: method kway chooses k itself, at most this many (method auto: default 20)
   double mu = 0.3;         // graph-cut smoothness
   bool mean_edge = false;  // graph cut: edge lengths over the mean edge length
@@ -225,6 +235,16 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   return r.labels;
 }
 
+std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
+{
+  const SpectralSeg::Execution exec(o.threads);
+  SpectralSeg::Automatic_segmentation_options<> so;
+  so.segmentability.threshold = o.eta;
+  so.segmentability.structure_only = o.structure_only;
+  so.min_part_area_fraction = o.min_part_area;
+  return SpectralSeg::segment_automatically(g, SpectralSeg::sequence_weights(g, exec), so, exec).labels;
+}
+
 std::vector<int> run_sdf(Mesh& mesh)
 {
   auto sdf = mesh.add_property_map<Mesh::Face_index, double>("f:sdf").first;
@@ -311,7 +331,13 @@ int main(int argc, char** argv)
         throw std::runtime_error("missing value after " + a);
       return args[++i];
     };
-    if(a == "--methods")
+    if(a == "--eta")
+      o.eta = std::stod(next());
+    else if(a == "--min-part-area")
+      o.min_part_area = std::stod(next());
+    else if(a == "--structure-only")
+      o.structure_only = true;
+    else if(a == "--methods")
       o.methods = split(next(), ',');
     else if(a == "--shard")
     {
@@ -406,12 +432,14 @@ int main(int argc, char** argv)
     for(const std::string& method : o.methods)
     {
       const auto t0 = std::chrono::steady_clock::now();
-      if(method != "sdf" && method != "kway" && method != "auto")
-        throw std::runtime_error("unknown method '" + method + "' (kway, auto or sdf)");
+      if(method != "sdf" && method != "kway" && method != "auto" && method != "salient")
+        throw std::runtime_error("unknown method '" + method + "' (kway, auto, salient or sdf)");
       Options mo = o;
       if(method == "auto" && mo.auto_k == 0)
         mo.auto_k = 20;
-      const std::vector<int> labels = method == "sdf" ? run_sdf(mesh) : run_kway(mo, g, k);
+      const std::vector<int> labels = method == "sdf"       ? run_sdf(mesh)
+                                      : method == "salient" ? run_salient(mo, g)
+                                                            : run_kway(mo, g, k);
       const std::string method_name = method == "kway" && o.auto_k > 0 ? "kway-auto" : method;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       double ri = 0;

@@ -27,3 +27,10 @@
 /// \example k_way_segmentation.cpp
 /// k-way segmentation of a `CGAL::Surface_mesh` with the defaults, segment
 /// areas, a coloured PLY, and the spectral embedding clustered by hand.
+
+/// \example automatic_segmentation.cpp
+/// Automatic segmentation of a `CGAL::Polyhedron_3` by recursive salient
+/// cuts (thesis ch. 6) with `SpectralSeg::automatic_segmentation()`: the
+/// number of parts, the `SpectralSeg::Part_hierarchy` printed level by level
+/// (test, score and salience of each cut), and the hierarchy replayed to 3
+/// parts. Usage: `automatic_segmentation [mesh.off]`.

@@ -24,7 +24,11 @@ struct Metric_options
 {
   std::string name = "part-aware";
   std::vector<double> weights{0.01, 0.195, 0.795};
+#ifdef SPECTRALSEG_HAS_EMBREE
+  std::string ray_caster = "embree"; // the fastest backend when built
+#else
   std::string ray_caster = "aabb";
+#endif
   double vsi_fraction = 0.01;
   std::string normalization = "p99";
 };
