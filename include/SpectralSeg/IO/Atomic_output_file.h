@@ -196,9 +196,10 @@ public:
       error = errno;
     if(error != 0)
     {
+      const bool replaced = !temporary_.empty();
       discard();
       throw Io_error("cannot write '" + path_ + "': " + std::strerror(error) +
-                     (temporary_.empty() ? "" : " (the previous file, if any, is left unchanged)"));
+                     (replaced ? " (the previous file, if any, is left unchanged)" : ""));
     }
     temporary_.clear();
   }

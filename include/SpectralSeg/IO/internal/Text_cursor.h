@@ -161,7 +161,7 @@ public:
       fail("expected " + what.str() + ", found " + quoted(token));
     if(s == Parse_status::overflow || !std::isfinite(value))
       throw Invalid_input(file_->message(where(), what.str() + " " + quoted(token) +
-                                                   " is not a finite number (NaN, infinity or out of range)"));
+                                                   " is non-finite (NaN, infinity or out of range)"));
     return value;
   }
   // the next token as a non-negative integer at most `limit`

@@ -74,7 +74,7 @@ inline void read_obj(const File_bytes& file, Polygon_soup& soup)
         if(s == Parse_status::overflow || !std::isfinite(value))
           throw Invalid_input(file.message(in.where(), "the " + std::string(1, "xyz"[c]) + " coordinate of vertex " +
                                                          std::to_string(soup.points.size() + 1) + " " + quoted(token) +
-                                                         " is not a finite number (NaN, infinity or out of range)"));
+                                                         " is non-finite (NaN, infinity or out of range)"));
         p[std::size_t(c)] = value;
       }
       soup.points.push_back(p);

@@ -226,7 +226,7 @@ public:
         text_.fail("expected " + what() + ", found " + quoted(token));
       if(s == Parse_status::overflow || !std::isfinite(v))
         throw Invalid_input(file_.message(text_.where(), what() + " " + quoted(token) +
-                                                           " is not a finite number (NaN, infinity or out of range)"));
+                                                           " is non-finite (NaN, infinity or out of range)"));
       return v;
     }
     const unsigned char* b = bytes(t.size);
@@ -242,7 +242,7 @@ public:
     else
       std::memcpy(&v, ordered(b, 8).data(), 8);
     if(!std::isfinite(v))
-      throw Invalid_input(file_.message(where(), what() + " is not a finite number (NaN or infinity)"));
+      throw Invalid_input(file_.message(where(), what() + " is non-finite (NaN or infinity)"));
     return v;
   }
 

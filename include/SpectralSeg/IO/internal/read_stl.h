@@ -121,14 +121,16 @@ inline void read_ascii_stl(const File_bytes& file, Polygon_soup& soup)
 }
 
 /// Reads an STL file. It is binary if its size is exactly that its
-/// binary header announces, or if it does not start with `solid`; ASCII
+/// binary header announces, or if it does not start with `solid`, or if it
+/// holds a NUL byte (binary files may start with `solid` too); ASCII
 /// otherwise. Every triangle has its own three corners (welded later).
 inline void read_stl(const File_bytes& file, Polygon_soup& soup)
 {
   const bool starts_solid = file.data.compare(0, 5, "solid") == 0;
   const std::uint64_t n = binary_stl_triangles(file);
   const bool binary_size = file.data.size() >= 84 && n < (std::uint64_t(1) << 32) && 84 + 50 * n == file.data.size();
-  if(binary_size || !starts_solid)
+  const bool has_nul = file.data.find('\0') != std::string::npos;
+  if(binary_size || !starts_solid || has_nul)
     read_binary_stl(file, soup);
   else
     read_ascii_stl(file, soup);
