@@ -539,7 +539,7 @@ std::vector<Fuzz_case> fuzz_cases()
         cases.push_back({"index_" + h + "_" + id, replace_token(base.text, base.data_begin, 6 * 4 + 2, h), true});
       for(const std::string& h : hostile_numbers)
         cases.push_back({"coord_" + h + "_" + id, replace_token(base.text, base.data_begin, 1, h), true});
-      for(const std::string& type : {"float16", "int64", "string", "list"})
+      for(const std::string type : {"float16", "int64", "string", "list"})
         cases.push_back({"type_" + type + "_" + id, replace_token(base.text, base.text.find("property int x"), 1, type), true});
       std::string more = base.text;
       more.replace(more.find("element face 8"), 14, "element face 9");
