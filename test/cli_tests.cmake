@@ -30,6 +30,31 @@ function(run_cli expect_rc pattern)
   endif()
 endfunction()
 
+# like run_cli, for a shell command line (limits set with ulimit, redirections);
+# the tool is $SPECTRALSEG in it
+function(run_sh expect_rc pattern script)
+  execute_process(COMMAND sh -c "${script}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+  math(EXPR n "${checks} + 1")
+  set(checks ${n} PARENT_SCOPE)
+  if(NOT rc EQUAL expect_rc OR NOT "${out}${err}" MATCHES "${pattern}")
+    message("FAIL: sh -c '${script}'\n  expected rc ${expect_rc} and /${pattern}/\n  got rc ${rc}\n  stdout: ${out}\n  stderr: ${err}")
+    math(EXPR f "${failures} + 1")
+    set(failures ${f} PARENT_SCOPE)
+  else()
+    message("ok: sh -c '${script}'")
+  endif()
+endfunction()
+
+# a check of a file's content
+function(expect_content file expected)
+  file(READ ${WORK}/${file} text)
+  if(NOT text STREQUAL expected)
+    message("FAIL: ${file} holds '${text}', expected '${expected}'")
+    math(EXPR n "${failures} + 1")
+    set(failures ${n} PARENT_SCOPE)
+  endif()
+endfunction()
+
 # a check of an output file: every file given exists
 function(expect_files what)
   foreach(f ${ARGN})
@@ -53,7 +78,7 @@ function(expect_lines file expected)
 endfunction()
 
 run_cli(0 "distance" --help)
-run_cli(nonzero "" info)
+run_cli(2 "MESH is required" info)
 run_cli(nonzero "cannot open" info ${WORK}/missing.off)
 file(WRITE ${WORK}/empty.off "")
 run_cli(1 "empty" info ${WORK}/empty.off)
@@ -65,7 +90,7 @@ run_cli(0 "faces: 12" info ${WORK}/quads.off)
 run_cli(0 "field:" distance ${WORK}/quads.off --from 5 --field ${WORK}/quads.txt)
 expect_lines(quads.txt 6)
 run_cli(1 "does not exist" distance ${DATA}/elephant.off --from 999999 --field ${WORK}/x.txt)
-run_cli(nonzero "metric" distance ${DATA}/elephant.off --from 0 --metric nonsense --field ${WORK}/x.txt)
+run_cli(2 "metric" distance ${DATA}/elephant.off --from 0 --metric nonsense --field ${WORK}/x.txt)
 run_cli(0 "png:" distance ${DATA}/elephant.off --from 0 --metric angular --field ${WORK}/el.txt --png ${WORK}/el.png)
 expect_files(distance el.png)
 
@@ -87,17 +112,81 @@ file(REMOVE ${WORK}/el_render.png ${WORK}/el_render.ply)
 run_cli(0 "png: .*el_render.png" render ${DATA}/elephant.off ${WORK}/el.seg --png ${WORK}/el_render.png
         --mesh ${WORK}/el_render.ply --view 0,-1,0,0,0,1 --view 1,0,0,0,1,0 -q)
 expect_files(render el_render.png el_render.ply)
-run_cli(1 "six numbers" render ${DATA}/elephant.off ${WORK}/el.seg --png ${WORK}/x.png --view 0,0,0,0,1,0)
-run_cli(1 "six numbers" render ${DATA}/elephant.off ${WORK}/el.seg --png ${WORK}/x.png --view 1,2,x)
-run_cli(1 "nothing to write" render ${DATA}/elephant.off ${WORK}/el.seg)
+run_cli(2 "six numbers" render ${DATA}/elephant.off ${WORK}/el.seg --png ${WORK}/x.png --view 0,0,0,0,1,0)
+run_cli(2 "six numbers" render ${DATA}/elephant.off ${WORK}/el.seg --png ${WORK}/x.png --view 1,2,x)
+run_cli(2 "nothing to write" render ${DATA}/elephant.off ${WORK}/el.seg)
 file(WRITE ${WORK}/short.seg "0\n1\n")
 run_cli(1 "labels but" eval --mesh ${DATA}/elephant.off ${WORK}/el.seg ${WORK}/short.seg)
 run_cli(1 "larger than the number of faces" segment ${WORK}/quads.off --k 13 --labels ${WORK}/q.seg)
-run_cli(1 "positive integer" segment ${WORK}/quads.off --k 0 --labels ${WORK}/q.seg)
-run_cli(1 "positive integer" segment ${WORK}/quads.off --k 3x --labels ${WORK}/q.seg)
+run_cli(2 "positive integer" segment ${WORK}/quads.off --k 0 --labels ${WORK}/q.seg)
+run_cli(2 "positive integer" segment ${WORK}/quads.off --k 3x --labels ${WORK}/q.seg)
 run_cli(0 "segments: 12" segment ${WORK}/quads.off --k 12 --labels ${WORK}/q.seg -q)
 
+# --- hostile input: legal files read, malformed ones refused with the place at fault
+file(WRITE ${WORK}/int.ply "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty short y\nproperty uchar z\nelement face 1\nproperty list uchar ushort vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+run_cli(0 "faces: 1" info ${WORK}/int.ply)
+file(WRITE ${WORK}/lines.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nl 1 2 3\nf 1//1 2//1 3//1\n")
+run_cli(0 "line or point elements ignored" info ${WORK}/lines.obj)
+file(WRITE ${WORK}/claims.off "OFF\n3 100000000 0\n0 0 0\n1 0 0\n0 1 0\n")
+run_cli(1 "line 3: the header announces 3 vertices and 100000000 faces" info ${WORK}/claims.off)
+file(WRITE ${WORK}/wrap.off "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967296\n")
+run_cli(1 "line 6: face 0 refers to vertex 4294967296" info ${WORK}/wrap.off)
+file(WRITE ${WORK}/fraction.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 1.5\n")
+run_cli(1 "line 4: .*'1.5'" info ${WORK}/fraction.obj)
+file(WRITE ${WORK}/copies.off "OFF\n3 3 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n3 1 2 0\n")
+run_cli(1 "2 of its 3 faces repeat another face" distance ${WORK}/copies.off --from 0 --field ${WORK}/copies.txt)
+
+# --- arguments that make no sense: exit code 2, before any work
+run_cli(2 "--max-k: '-1' is not a whole number" segment ${WORK}/quads.off --k auto --max-k -1 --labels ${WORK}/q.seg)
+run_cli(2 "--extra-clusters: '-1'" segment ${WORK}/quads.off --k 2 --extra-clusters -1 --labels ${WORK}/q.seg)
+run_cli(2 "--samples: '-1'" segment ${WORK}/quads.off --k 2 --samples -1 --labels ${WORK}/q.seg)
+run_cli(2 "--samples: '20000'" segment ${WORK}/quads.off --k 2 --samples 20000 --labels ${WORK}/q.seg)
+run_cli(2 "--min-boundary-contrast: 'nan'" segment ${WORK}/quads.off --k auto --min-boundary-contrast nan --labels ${WORK}/q.seg)
+run_cli(2 "--vsi-fraction: 'nan'" distance ${WORK}/quads.off --from 0 --vsi-fraction nan --field ${WORK}/q.txt)
+run_cli(2 "--weights: '1,,1': item ''" distance ${WORK}/quads.off --from 0 --weights 1,,1 --field ${WORK}/q.txt)
+run_cli(2 "--weights: '1e308,1e308,1e308'" distance ${WORK}/quads.off --from 0 --weights 1e308,1e308,1e308 --field ${WORK}/q.txt)
+# (through sh: CMake drops empty arguments)
+run_sh(2 "--from: an empty value" "exec ${SPECTRALSEG} distance ${WORK}/quads.off --from '' --field ${WORK}/q.txt")
+run_sh(2 "--labels: an empty value" "exec ${SPECTRALSEG} segment ${WORK}/quads.off --k 2 --labels ''")
+run_cli(2 "positive integer up to 100" segment ${WORK}/quads.off --k 52000 --labels ${WORK}/q.seg)
+run_cli(2 "not expected" info ${WORK}/quads.off --bogus)
+
+# --- limits: refused up front with the figure and the option to change
+run_sh(1 "exact embedding of 19536 faces.*needs about 9.2 GB.*use --sampling nystrom"
+       "ulimit -v 4000000; exec ${SPECTRALSEG} segment ${DATA}/camel.off --k 4 --sampling exact --labels ${WORK}/c.seg -q")
+run_cli(1 "at most 100 are supported" segment ${DATA}/elephant.off --k 99 --extra-clusters 3 --labels ${WORK}/q.seg)
+# memory exhausted anywhere: a clear message, exit code 1, never a bare std::bad_alloc
+# (the tool needs some 50 MB to load its libraries: a few caps are tried,
+# every run must succeed or say "out of memory", at least one must say it)
+run_sh(0 "out of memory seen"
+       "found=0; for v in 50000 55000 60000 65000 70000 80000; do out=$( (ulimit -v $v; exec ${SPECTRALSEG} distance ${DATA}/camel.off --from 0 --field ${WORK}/c.txt -q) 2>&1); rc=$?; case \"$out\" in *bad_alloc*) echo \"bare: $out\"; exit 3;; *'error: out of memory'*) [ $rc = 1 ] || exit 4; found=1;; esac; done; [ $found = 1 ] && echo 'out of memory seen'")
+
+# --- outputs: unwritable paths refused before the computation, full disks
+# detected, the old file kept
+file(REMOVE ${WORK}/before.seg)
+run_cli(1 "cannot write '${WORK}/quads.off/x.png'.*Not a directory" segment ${DATA}/elephant.off --k 4
+        --labels ${WORK}/before.seg --png ${WORK}/quads.off/x.png -q)
+if(EXISTS ${WORK}/before.seg)
+  message("FAIL: the labels were written although --png was unwritable (checked too late)")
+  math(EXPR failures "${failures} + 1")
+endif()
+run_cli(1 "cannot write '/dev/full': No space left on device" segment ${WORK}/quads.off --k 2 --labels /dev/full)
+run_cli(1 "cannot write '/dev/full'" distance ${WORK}/quads.off --from 0 --field /dev/full)
+run_sh(1 "cannot write to standard output" "exec ${SPECTRALSEG} info --json ${WORK}/quads.off > /dev/full")
+run_sh(1 "cannot write to standard output" "exec ${SPECTRALSEG} eval --mesh ${WORK}/quads.off ${WORK}/q.seg ${WORK}/q.seg > /dev/full")
+file(WRITE ${WORK}/old.seg "old\n")
+run_sh(1 "cannot write '${WORK}/old.seg': File too large \\(the previous file, if any, is left unchanged\\)"
+       "ulimit -f 4; exec ${SPECTRALSEG} segment ${DATA}/elephant.off --k 4 --labels ${WORK}/old.seg -q")
+expect_content(old.seg "old\n")
+file(GLOB leftovers ${WORK}/.old.seg.tmp*)
+if(leftovers)
+  message("FAIL: temporary files left behind: ${leftovers}")
+  math(EXPR failures "${failures} + 1")
+endif()
+
 if(EXISTS ${SHARED}/meshes)
+  run_cli(1 "2000 Nystr[^ ]*m samples on 52000 faces: samples x faces is limited" segment ${SHARED}/meshes/armadillo.off
+          --k 4 --samples 2000 --labels ${WORK}/a.seg -q)
   foreach(name wuson_unwelded truck_nonmanifold pig_stl_soup dragon_res3_nonmanifold teapot_patches elephant_with_holes chinese_dragon)
     run_cli(0 "faces:" info ${SHARED}/meshes/${name}.off)
     run_cli(0 "field:" distance ${SHARED}/meshes/${name}.off --from 0 --field ${WORK}/${name}.txt -q)

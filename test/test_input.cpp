@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading files: every defect gets a clear message or a documented repair.
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/IO/Atomic_output_file.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/IO/write_face_values.h>
 #include <SpectralSeg/Metrics/Angular_weight.h>
@@ -14,11 +15,21 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <random>
 #include <string>
+#include <vector>
+
+#include <signal.h>
+#include <sys/resource.h>
 
 namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -159,4 +170,470 @@ TEST_CASE("every shared test mesh is read and measured, or rejected with a messa
     }
   }
   CHECK(count >= 20);
+}
+
+// ---------------------------------------------------------------------------
+// Hostile files: every legal variant read, every malformed one refused with
+// the place at fault, nothing allocated from a count the file cannot hold.
+
+namespace {
+
+std::string write_binary(const std::string& name, const std::string& bytes)
+{
+  const fs::path dir = fs::temp_directory_path() / "spectralseg_test_input";
+  fs::create_directories(dir);
+  const fs::path p = dir / name;
+  std::ofstream(p, std::ios::binary) << bytes;
+  return p.string();
+}
+
+// an octahedron: 6 vertices, 8 triangles, closed
+const double octahedron_points[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+const int octahedron_faces[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+
+std::string octahedron_off()
+{
+  std::string s = "OFF\n6 8 0\n";
+  for(const auto& p : octahedron_points)
+    s += std::to_string(int(p[0])) + " " + std::to_string(int(p[1])) + " " + std::to_string(int(p[2])) + "\n";
+  for(const auto& f : octahedron_faces)
+    s += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n";
+  return s;
+}
+
+std::string octahedron_obj()
+{
+  std::string s = "# octahedron\nmtllib x.mtl\no oct\n";
+  for(const auto& p : octahedron_points)
+    s += "v " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+  s += "vt 0 0\nvn 0 0 1\ng all\nusemtl m\ns 1\n";
+  for(const auto& f : octahedron_faces)
+    s += "f " + std::to_string(f[0] + 1) + "/1/1 " + std::to_string(f[1] + 1) + "//1 " + std::to_string(f[2] - 6) + "\n";
+  return s + "l 1 2 3\np 4\n";
+}
+
+// `offset` is added to the coordinates (1 for unsigned types: the octahedron has -1)
+std::string ascii_ply(const std::string& coordinate_type, const std::string& count_type, const std::string& index_type,
+                      int offset = 0)
+{
+  std::string s = "ply\nformat ascii 1.0\ncomment test\nelement vertex 6\nproperty " + coordinate_type +
+                  " x\nproperty " + coordinate_type + " y\nproperty " + coordinate_type +
+                  " z\nproperty uchar red\nelement face 8\nproperty list " + count_type + " " + index_type +
+                  " vertex_indices\nproperty float quality\nelement edge 1\nproperty int vertex1\nproperty int vertex2\n"
+                  "end_header\n";
+  for(const auto& p : octahedron_points)
+    s += std::to_string(int(p[0]) + offset) + " " + std::to_string(int(p[1]) + offset) + " " +
+         std::to_string(int(p[2]) + offset) + " 255\n";
+  for(const auto& f : octahedron_faces)
+    s += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + " 0.5\n";
+  return s + "0 1\n";
+}
+
+// a value of a PLY type in the given byte order
+template <typename T>
+void put(std::string& out, T value, bool big_endian)
+{
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  if(big_endian)
+    std::reverse(bytes, bytes + sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+template <typename Coordinate, typename Count, typename Index>
+std::string binary_ply(const std::string& coordinate_type, const std::string& count_type, const std::string& index_type,
+                       bool big_endian, std::size_t announced_vertices = 6, int offset = 0)
+{
+  std::string s = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+                  " 1.0\nelement vertex " + std::to_string(announced_vertices) + "\nproperty " + coordinate_type +
+                  " x\nproperty " + coordinate_type + " y\nproperty " + coordinate_type + " z\nelement face 8\n" +
+                  "property list " + count_type + " " + index_type + " vertex_indices\nend_header\n";
+  for(const auto& p : octahedron_points)
+    for(int c = 0; c < 3; ++c)
+      put(s, Coordinate(p[c] + offset), big_endian);
+  for(const auto& f : octahedron_faces)
+  {
+    put(s, Count(3), big_endian);
+    for(int c = 0; c < 3; ++c)
+      put(s, Index(f[c]), big_endian);
+  }
+  return s;
+}
+
+std::string octahedron_ascii_stl()
+{
+  std::string s = "solid oct\n";
+  for(const auto& f : octahedron_faces)
+  {
+    s += "  facet normal 0 0 0\n    outer loop\n";
+    for(int c = 0; c < 3; ++c)
+      s += "      vertex " + std::to_string(octahedron_points[f[c]][0]) + " " +
+           std::to_string(octahedron_points[f[c]][1]) + " " + std::to_string(octahedron_points[f[c]][2]) + "\n";
+    s += "    endloop\n  endfacet\n";
+  }
+  return s + "endsolid oct\n";
+}
+
+std::string octahedron_binary_stl(std::uint32_t announced = 8)
+{
+  std::string s = "solid but binary";
+  s.resize(80, ' ');
+  put(s, announced, false);
+  for(const auto& f : octahedron_faces)
+  {
+    for(int c = 0; c < 3; ++c)
+      put(s, 0.f, false);
+    for(int c = 0; c < 3; ++c)
+      for(int k = 0; k < 3; ++k)
+        put(s, float(octahedron_points[f[c]][k]), false);
+    put(s, std::uint16_t(0), false);
+  }
+  return s;
+}
+
+// Reads `text` as a file named `name`; CHECKs that it is read as the
+// octahedron (8 faces, closed).
+void check_octahedron(const std::string& name, const std::string& text)
+{
+  INFO(name);
+  Mesh m;
+  IO::Mesh_file_report r;
+  REQUIRE_NOTHROW(r = IO::read_mesh_file(write_binary(name, text), m));
+  CHECK(num_faces(m) == 8);
+  CHECK(num_vertices(m) == 6);
+  CHECK(r.closed);
+}
+
+// Reading `text` throws a SpectralSeg exception whose message holds `expected`.
+void check_refused(const std::string& name, const std::string& text, const std::string& expected)
+{
+  INFO(name << ":\n" << text.substr(0, 300));
+  Mesh m;
+  CHECK_THROWS_WITH(IO::read_mesh_file(write_binary(name, text), m), Catch::Contains(expected));
+}
+
+} // namespace
+
+TEST_CASE("legal variants of each format are read", "[input][hostile]")
+{
+  check_octahedron("oct.off", octahedron_off());
+  check_octahedron("oct_inline_counts.off", "OFF 6 8 0\n" + octahedron_off().substr(10));
+  check_octahedron("oct_no_keyword.off", octahedron_off().substr(4));
+  check_octahedron("oct.obj", octahedron_obj());
+  for(const std::string type : {"int", "short", "int32", "char", "int8", "int16", "float", "double", "float32"})
+    check_octahedron("oct_" + type + ".ply", ascii_ply(type, "uchar", "int"));
+  for(const std::string type : {"uchar", "ushort", "uint", "uint8", "uint16", "uint32"})
+    check_octahedron("oct_" + type + ".ply", ascii_ply(type, "uchar", "int", 1));
+  check_octahedron("oct_ushort_lists.ply", ascii_ply("float", "ushort", "ushort"));
+  check_octahedron("oct_uchar_lists.ply", ascii_ply("float", "uchar", "uchar"));
+  for(const bool big : {false, true})
+  {
+    const std::string e = big ? "_be" : "_le";
+    check_octahedron("oct_int" + e + ".ply", binary_ply<std::int32_t, std::uint8_t, std::int32_t>("int", "uchar", "int", big));
+    check_octahedron("oct_short" + e + ".ply", binary_ply<std::int16_t, std::uint8_t, std::uint16_t>("short", "uchar", "ushort", big));
+    check_octahedron("oct_uchar" + e + ".ply", binary_ply<std::uint8_t, std::uint8_t, std::uint8_t>("uchar", "uchar", "uchar", big, 6, 1));
+    check_octahedron("oct_int32" + e + ".ply", binary_ply<std::int32_t, std::uint16_t, std::uint32_t>("int32", "ushort", "uint32", big));
+    check_octahedron("oct_double" + e + ".ply", binary_ply<double, std::int32_t, std::int32_t>("double", "int", "int", big));
+  }
+  check_octahedron("oct_ascii.stl", octahedron_ascii_stl());
+  check_octahedron("oct_binary.stl", octahedron_binary_stl());
+
+  // OBJ l and p elements are counted and reported, not refused
+  Mesh m;
+  const IO::Mesh_file_report r = IO::read_mesh_file(write_binary("oct_lines.obj", octahedron_obj()), m);
+  CHECK(r.ignored_elements == 2);
+}
+
+TEST_CASE("malformed files are refused with the place at fault", "[input][hostile]")
+{
+  const std::string tri = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  check_refused("wrapping.off", tri + "3 0 1 4294967296\n", "line 6: face 0 refers to vertex 4294967296");
+  check_refused("huge_index.off", tri + "3 0 1 100000000000000000000\n", "out of range");
+  check_refused("exponent.off", tri + "3 0 1 1e20\n", "found '1e20'");
+  check_refused("letter.off", tri + "3 0 1 x\n", "found 'x'");
+  check_refused("fraction.off", tri + "3 0 1 1.5\n", "found '1.5'");
+  check_refused("negative.off", tri + "3 0 1 -1\n", "found '-1'");
+  check_refused("missing.off", tri + "3 0 1 3\n", "refers to vertex 3 but the file has 3 vertices");
+  check_refused("truncated.off", tri + "3 0 1", "line 6: face 0 announces 3 vertices but the file ends");
+  check_refused("truncated_index.off", tri + "3 0 1\n\n\n", "line 9: the file ends where a vertex index of face 0");
+  check_refused("extra.off", tri + "3 0 1 2\n3 0 2 1\n", "after the 1 faces");
+  check_refused("word_coordinate.off", "OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n", "line 4");
+  check_refused("overflow_coordinate.off", "OFF\n3 1 0\n0 0 0\n1 1e999 0\n0 1 0\n3 0 1 2\n", "non-finite");
+  check_refused("binary.off", "OFF BINARY\n", "binary OFF");
+
+  check_refused("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "line 4");
+  check_refused("forward.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "line 4: a face refers to vertex 7");
+  check_refused("relative.obj", "v 0 0 0\nv 1 0 0\nf 1 2 -3\n", "line 3");
+  check_refused("fraction.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2.5\n", "'2.5'");
+  check_refused("overflow.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n", "out of range");
+  check_refused("short_vertex.obj", "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "line 1");
+  check_refused("unknown.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nbogus 1\nf 1 2 3\n", "line 4: unknown OBJ statement 'bogus'");
+
+  check_refused("float_indices.ply", ascii_ply("float", "uchar", "float"), "non-integer type");
+  std::string big_uchar = ascii_ply("uchar", "uchar", "int", 1);
+  big_uchar.replace(big_uchar.find("\n2 1 1 255"), 6, "\n256 1");
+  check_refused("big_uchar.ply", big_uchar, "'256' is out of the range of its type");
+  check_refused("no_xyz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n", "lacks an x, y or z");
+  check_refused("bad_type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nend_header\n0\n", "unknown PLY type");
+  check_refused("no_end.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", "end_header");
+  // a binary PLY promising more vertices than it holds: refused before reading
+  check_refused("more_vertices.ply", binary_ply<float, std::uint8_t, std::int32_t>("float", "uchar", "int", false, 1000),
+                "1000 'vertex' elements");
+  check_refused("empty_element.ply", "ply\nformat ascii 1.0\nelement vertex 3\nelement face 1000000000000\nend_header\n", "no property");
+  check_refused("truncated_binary.stl", octahedron_binary_stl(9), "announces 9 triangles");
+  check_refused("no_endloop.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendfacet\n", "line 7");
+  check_refused("nan.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex nan 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n", "non-finite");
+}
+
+TEST_CASE("counts the file cannot hold are refused before allocating", "[input][hostile]")
+{
+  // a 40-byte OFF claiming 10^8 faces: refused at once, from the header
+  const std::string text = "OFF\n3 100000000 0\n0 0 0\n1 0 0\n0 1 0\n";
+  const auto start = std::chrono::steady_clock::now();
+  check_refused("claims.off", text, "which need at least 200000018 bytes, but only");
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 0.5);
+  check_refused("claims.ply", "ply\nformat ascii 1.0\nelement vertex 100000000\nproperty float x\nproperty float y\n"
+                              "property float z\nend_header\n0 0 0\n", "100000000 'vertex' elements");
+  check_refused("claims_list.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\n"
+                                   "property float y\nproperty float z\nelement face 1\n"
+                                   "property list uint int vertex_indices\nend_header\n\xff\xff\xff\x0f",
+                "vertices; faces of more than");
+  check_refused("claims_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n100000000 0 1 2\n", "faces of more than");
+}
+
+TEST_CASE("files of repeated faces and huge polygons are refused with a reason", "[input][hostile]")
+{
+  std::string copies = "OFF\n3 50 0\n0 0 0\n1 0 0\n0 1 0\n";
+  for(int i = 0; i < 50; ++i)
+    copies += i % 2 == 0 ? "3 0 1 2\n" : "3 2 1 0\n";
+  check_refused("copies.off", copies, "49 of its 50 faces repeat another face");
+
+  // a double-sided mesh (each face twice) is still repaired, not refused
+  std::string twice = "OFF\n6 16 0\n" + octahedron_off().substr(10, octahedron_off().find("3 0 2 4") - 10);
+  for(const auto& f : octahedron_faces)
+    twice += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + "\n3 " +
+             std::to_string(f[2]) + " " + std::to_string(f[1]) + " " + std::to_string(f[0]) + "\n";
+  Mesh m;
+  IO::Mesh_file_report r;
+  REQUIRE_NOTHROW(r = IO::read_mesh_file(write_binary("twice.off", twice), m));
+  CHECK(r.duplicate_faces == 8);
+
+  // a 6,000-gon is refused at once instead of taking a minute to triangulate
+  const std::size_t n = 6000;
+  std::string polygon = "OFF\n" + std::to_string(n) + " 1 0\n";
+  for(std::size_t i = 0; i < n; ++i)
+    polygon += std::to_string(std::cos(6.283185307179586 * double(i) / double(n))) + " " +
+               std::to_string(std::sin(6.283185307179586 * double(i) / double(n))) + " 0\n";
+  polygon += std::to_string(n);
+  for(std::size_t i = 0; i < n; ++i)
+    polygon += " " + std::to_string(i);
+  const auto start = std::chrono::steady_clock::now();
+  check_refused("polygon.off", polygon + "\n", "faces of more than 256 vertices are refused");
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 1.);
+}
+
+namespace {
+
+// Mutations of a valid file. `malformed` mutations must be refused;
+// the others (random bytes) only must not crash or throw anything but a
+// SpectralSeg exception.
+struct Fuzz_case
+{
+  std::string name;
+  std::string bytes;
+  bool malformed;
+};
+
+// replaces the `which`-th whitespace-separated token at or after `from`
+std::string replace_token(const std::string& text, std::size_t from, std::size_t which, const std::string& by)
+{
+  std::size_t p = from;
+  for(std::size_t t = 0;; ++t)
+  {
+    p = text.find_first_not_of(" \t\r\n", p);
+    if(p == std::string::npos)
+      return text;
+    const std::size_t e = std::min(text.find_first_of(" \t\r\n", p), text.size());
+    if(t == which)
+      return text.substr(0, p) + by + text.substr(e);
+    p = e;
+  }
+}
+
+std::vector<Fuzz_case> fuzz_cases()
+{
+  struct Base
+  {
+    std::string name;
+    std::string text;
+    std::size_t data_begin;   // where the body starts (after the header)
+    bool counted;             // whether the header counts the body (truncation is always malformed)
+  };
+  const std::string ply_a = ascii_ply("int", "uchar", "int");
+  const std::string ply_b = binary_ply<std::int16_t, std::uint8_t, std::uint16_t>("short", "uchar", "ushort", false);
+  const std::vector<Base> bases = {
+    {"off", octahedron_off(), 10, true},
+    {"obj", octahedron_obj(), 0, false},
+    {"ply", ply_a, ply_a.find("end_header") + 11, true},
+    {"ply", ply_b, ply_b.find("end_header") + 11, true},
+    {"stl", octahedron_ascii_stl(), 0, true},
+    {"stl", octahedron_binary_stl(), 84, true}};
+  const std::vector<std::string> hostile_indices = {"-1", "4294967296", "1e20", "x", "1.5", "99999999999999999999", "0x1"};
+  const std::vector<std::string> hostile_numbers = {"nan", "inf", "-inf", "1e999", "1,5", "--1", "0x"};
+  std::vector<Fuzz_case> cases;
+  std::mt19937 random(14);
+  for(std::size_t b = 0; b < bases.size(); ++b)
+  {
+    const Base& base = bases[b];
+    const std::string id = std::to_string(b) + "." + base.name;
+    const bool binary = base.text.find("binary") != std::string::npos || (base.name == "stl" && base.data_begin == 84);
+    // truncations: every one that cuts into the last token is malformed for counted formats
+    const std::size_t last = base.text.find_last_not_of(" \r\n");
+    for(std::size_t cut = 1; cut < base.text.size(); cut += 1 + base.text.size() / 40)
+    {
+      // ASCII STL: a cut inside the name after "endsolid" leaves a valid file
+      const bool after_end = base.name == "stl" && !binary && cut >= base.text.rfind("endsolid") + 8;
+      cases.push_back({"cut" + std::to_string(cut) + "_" + id, base.text.substr(0, cut),
+                       base.counted && cut <= last && !after_end});
+    }
+    // random bytes overwritten: anything may happen but a crash
+    for(int i = 0; i < 20; ++i)
+    {
+      std::string t = base.text;
+      for(int k = 0; k < 3; ++k)
+        t[random() % t.size()] = char(random() % 256);
+      cases.push_back({"bytes" + std::to_string(i) + "_" + id, t, false});
+    }
+    if(binary)
+    {
+      // binary bodies: counts and lengths overwritten with large values
+      for(int i = 0; i < 10; ++i)
+      {
+        std::string t = base.text;
+        const std::size_t at = base.data_begin + random() % (t.size() - base.data_begin);
+        t[at] = char(0xff);
+        cases.push_back({"ff" + std::to_string(i) + "_" + id, t, false});
+      }
+      continue;
+    }
+    // hostile tokens in place of face indices and coordinates
+    if(base.name == "off")
+    {
+      for(const std::string& h : hostile_indices)
+        cases.push_back({"index_" + h + "_" + id, replace_token(base.text, base.text.find("3 0 2 4"), 2, h), true});
+      for(const std::string& h : hostile_numbers)
+        cases.push_back({"coord_" + h + "_" + id, replace_token(base.text, 10, 4, h), true});
+      cases.push_back({"more_faces_" + id, "OFF\n6 9 0\n" + base.text.substr(10), true});
+      cases.push_back({"fewer_faces_" + id, "OFF\n6 7 0\n" + base.text.substr(10), true});
+      cases.push_back({"more_vertices_" + id, "OFF\n7 8 0\n" + base.text.substr(10), true});
+      cases.push_back({"many_faces_" + id, "OFF\n6 800000000 0\n" + base.text.substr(10), true});
+    }
+    if(base.name == "obj")
+      for(const std::string& h : hostile_indices)
+        if(h != "-1") // -1 is a legal relative index
+          cases.push_back({"index_" + h + "_" + id, replace_token(base.text, base.text.find("\nf ") + 1, 2, h), true});
+    if(base.name == "ply")
+    {
+      for(const std::string& h : hostile_indices)
+        cases.push_back({"index_" + h + "_" + id, replace_token(base.text, base.data_begin, 6 * 4 + 2, h), true});
+      for(const std::string& h : hostile_numbers)
+        cases.push_back({"coord_" + h + "_" + id, replace_token(base.text, base.data_begin, 1, h), true});
+      for(const std::string type : {"float16", "int64", "string", "list"})
+        cases.push_back({"type_" + type + "_" + id, replace_token(base.text, base.text.find("property int x"), 1, type), true});
+      std::string more = base.text;
+      more.replace(more.find("element face 8"), 14, "element face 9");
+      cases.push_back({"more_faces_" + id, more, true});
+    }
+    if(base.name == "stl")
+      for(const std::string& h : hostile_numbers)
+        cases.push_back({"coord_" + h + "_" + id, replace_token(base.text, base.text.find("vertex "), 2, h), true});
+  }
+  return cases;
+}
+
+} // namespace
+
+TEST_CASE("fuzz: malformed files of each format never crash and are never accepted", "[input][hostile][fuzz]")
+{
+  const std::vector<Fuzz_case> cases = fuzz_cases();
+  CHECK(cases.size() >= 300);
+  const auto start = std::chrono::steady_clock::now();
+  std::size_t refused = 0, read = 0;
+  for(const Fuzz_case& c : cases)
+  {
+    INFO(c.name << " (" << c.bytes.size() << " bytes):\n" << c.bytes.substr(0, 400));
+    Mesh m;
+    const std::string ext = c.name.substr(c.name.rfind('.'));
+    bool accepted = false;
+    try
+    {
+      IO::read_mesh_file(write_binary("fuzz" + ext, c.bytes), m);
+      accepted = true;
+      ++read;
+    }
+    catch(const Error& e)
+    {
+      ++refused;
+      CHECK(std::string(e.what()).find("fuzz") != std::string::npos); // the message names the file
+    }
+    if(c.malformed)
+      CHECK_FALSE(accepted);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  WARN(cases.size() << " fuzz cases: " << refused << " refused, " << read << " read, " << seconds << " s");
+  CHECK(seconds < 60.);
+}
+
+TEST_CASE("outputs are written all or nothing", "[input][output]")
+{
+  const fs::path dir = fs::temp_directory_path() / "spectralseg_test_output";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string labels = (dir / "labels.seg").string();
+  IO::write_face_values(labels, std::vector<int>{1, 2, 3});
+  const std::vector<int> many(200000, 7);
+
+  // a file-size limit of 4 KB stands for a full disk: the write fails, the old file stays
+  {
+    struct sigaction ignore = {}, old = {};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGXFSZ, &ignore, &old);
+    struct rlimit saved;
+    getrlimit(RLIMIT_FSIZE, &saved);
+    struct rlimit small = saved;
+    small.rlim_cur = 4096;
+    setrlimit(RLIMIT_FSIZE, &small);
+    CHECK_THROWS_WITH(IO::write_face_values(labels, many), Catch::Contains("left unchanged"));
+    CHECK_THROWS_AS(IO::write_text_file((dir / "report.json").string(), std::string(10000, 'x')), Io_error);
+    setrlimit(RLIMIT_FSIZE, &saved);
+    sigaction(SIGXFSZ, &old, nullptr);
+  }
+  std::ifstream in(labels);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text == "1\n2\n3\n");
+  CHECK_FALSE(fs::exists(dir / "report.json"));
+  std::size_t files = 0;
+  for(const auto& entry : fs::directory_iterator(dir))
+    files += entry.path().filename() == "labels.seg" ? 0 : 1;
+  CHECK(files == 0); // no temporary file left behind
+
+  // a device that is full
+  if(fs::exists("/dev/full"))
+    CHECK_THROWS_WITH(IO::write_face_values("/dev/full", many), Catch::Contains("No space left"));
+  // unwritable places are found before any work
+  CHECK_THROWS_WITH(IO::check_writable(labels + "/x.seg"), Catch::Contains("Not a directory"));
+  CHECK_THROWS_WITH(IO::check_writable("/nonexistent/dir/x.seg"), Catch::Contains("cannot create a file"));
+  CHECK_THROWS_WITH(IO::check_writable(dir.string()), Catch::Contains("is a directory"));
+  CHECK_NOTHROW(IO::check_writable(labels));
+  CHECK_NOTHROW(IO::check_writable((dir / "new.seg").string()));
+  CHECK_FALSE(fs::exists(dir / "new.seg"));
+
+  // a symbolic link is followed and kept
+  fs::create_symlink(labels, dir / "link.seg");
+  IO::write_face_values((dir / "link.seg").string(), std::vector<int>{4});
+  CHECK(fs::is_symlink(dir / "link.seg"));
+  std::ifstream again(labels);
+  std::string now((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+  CHECK(now == "4\n");
 }

@@ -4,6 +4,7 @@
 #ifndef SPECTRALSEG_TOOLS_COMMAND_DISTANCE_H
 #define SPECTRALSEG_TOOLS_COMMAND_DISTANCE_H
 
+#include "Argument_checks.h"
 #include "Loaded_mesh.h"
 #include "metric_choice.h"
 
@@ -39,11 +40,12 @@ inline void add_distance_command(CLI::App& app, Distance_options& o)
   cmd->add_option("--field", o.field, "output: one distance per face of the file, in file order ('inf' for "
                                       "faces in other components, 'nan' for dropped faces)")->required();
   cmd->add_option("--png", o.png, "output: picture of the field (blue near, red far, grey unreachable)");
-  cmd->add_option("--threads", o.threads, "threads (0 = all)");
+  cmd->add_option("--threads", o.threads, "threads (0 = all)")->check(Count(0, 4096));
 }
 
 inline int run_distance(const Distance_options& o, Progress_printer& out)
 {
+  check_outputs_writable({o.field, o.png});
   const Loaded_mesh m(o.mesh, out);
   const std::size_t source = m.mesh_face_of_input_face(o.from);
   const SpectralSeg::Execution exec(o.threads, out.callback());

@@ -4,15 +4,16 @@
 #ifndef SPECTRALSEG_TOOLS_COMMAND_EVAL_H
 #define SPECTRALSEG_TOOLS_COMMAND_EVAL_H
 
+#include "Argument_checks.h"
 #include "Loaded_mesh.h"
 
+#include <SpectralSeg/IO/Atomic_output_file.h>
 #include <SpectralSeg/evaluation.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -58,6 +59,7 @@ inline nlohmann::ordered_json scores_json(const SpectralSeg::Evaluation::Scores&
 inline int run_eval(const Eval_options& o, const Progress_printer& out)
 {
   namespace E = SpectralSeg::Evaluation;
+  check_outputs_writable({o.json});
   const Loaded_mesh m(o.mesh, out);
   const std::vector<int> predicted = labels_in_mesh_order(m, o.predicted);
   std::vector<std::vector<int>> truths;
@@ -104,13 +106,7 @@ inline int run_eval(const Eval_options& o, const Progress_printer& out)
       per.push_back(std::move(g));
     }
     j["per_ground_truth"] = std::move(per);
-    std::ofstream file(o.json);
-    if(!file)
-      throw SpectralSeg::Io_error("cannot write '" + o.json + "'");
-    file << j.dump(2) << "\n";
-    file.flush();
-    if(!file)
-      throw SpectralSeg::Io_error("error while writing '" + o.json + "'");
+    SpectralSeg::IO::write_text_file(o.json, j.dump(2) + "\n");
     std::cout << "json: " << o.json << "\n";
   }
   return 0;

@@ -4,6 +4,7 @@
 #ifndef SPECTRALSEG_TOOLS_COMMAND_RENDER_H
 #define SPECTRALSEG_TOOLS_COMMAND_RENDER_H
 
+#include "Argument_checks.h"
 #include "Loaded_mesh.h"
 
 #include <SpectralSeg/IO/write_colored_mesh.h>
@@ -49,13 +50,12 @@ inline SpectralSeg::Rendering::View parse_view(const std::string& text, std::siz
       used = 0;
     }
     if(item.empty() || used != item.size() || !std::isfinite(x))
-      throw SpectralSeg::Invalid_input("--view '" + text + "': expected six numbers dx,dy,dz,ux,uy,uz");
+      throw Usage_error("--view '" + text + "': expected six numbers dx,dy,dz,ux,uy,uz");
     v.push_back(x);
     start = comma + 1;
   }
   if(v.size() != 6 || (v[0] == 0. && v[1] == 0. && v[2] == 0.) || (v[3] == 0. && v[4] == 0. && v[5] == 0.))
-    throw SpectralSeg::Invalid_input("--view '" + text +
-                                     "': expected six numbers dx,dy,dz,ux,uy,uz with non-zero direction and up vectors");
+    throw Usage_error("--view '" + text + "': expected six numbers dx,dy,dz,ux,uy,uz with non-zero direction and up vectors");
   return SpectralSeg::Rendering::View{"view " + std::to_string(index + 1), {v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
 }
 
@@ -77,7 +77,7 @@ inline void add_render_command(CLI::App& app, Render_command_options& o)
 inline int run_render(const Render_command_options& o, const Progress_printer& out)
 {
   if(o.png.empty() && o.out_mesh.empty())
-    throw SpectralSeg::Invalid_input("render: nothing to write; give --png and/or --mesh");
+    throw Usage_error("render: nothing to write; give --png and/or --mesh");
   SpectralSeg::Rendering::Render_options ro;
   if(!o.views.empty())
   {
@@ -85,6 +85,7 @@ inline int run_render(const Render_command_options& o, const Progress_printer& o
     for(std::size_t i = 0; i < o.views.size(); ++i)
       ro.views.push_back(parse_view(o.views[i], i));
   }
+  check_outputs_writable({o.out_mesh, o.png});
   const Loaded_mesh m(o.mesh, out);
   const std::vector<int> labels = labels_in_mesh_order(m, o.labels);
   if(!o.out_mesh.empty())

@@ -4,7 +4,9 @@
 #ifndef SPECTRALSEG_TOOLS_COMMAND_SEGMENT_H
 #define SPECTRALSEG_TOOLS_COMMAND_SEGMENT_H
 
+#include "Argument_checks.h"
 #include "Loaded_mesh.h"
+#include "Work_limits.h"
 #include "metric_choice.h"
 #include "salient_cut_segmentation.h"
 
@@ -54,11 +56,11 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
                   "into --max-k clusters, then merge across the weakest boundaries while their mean concave "
                   "angle is below --min-boundary-contrast times the mesh's mean")
     ->required();
-  cmd->add_option("--max-k", o.max_k, "largest k considered by --k auto")->capture_default_str();
+  cmd->add_option("--max-k", o.max_k, "largest k considered by --k auto")->capture_default_str()->check(Count(2, max_clusters));
   cmd->add_option("--min-boundary-contrast", o.min_boundary_contrast,
                   "--k auto: segments are merged while their boundary's mean concave dihedral angle is below this "
                   "many times the mean over the whole mesh")
-    ->capture_default_str();
+    ->capture_default_str()->check(Finite_range(0., 1e6));
   add_metric_options(*cmd, o.metric);
   cmd->add_option("--kernel", o.kernel, "affinity kernel")
     ->check(CLI::IsMember({"exponential", "gaussian"}))
@@ -67,17 +69,17 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
                   "embedding: exact (full matrix), nystrom (farthest-point samples), gamma (Nyström with Gamma-sampling) or auto (exact up to 2000 faces, nystrom above)")
     ->check(CLI::IsMember({"auto", "exact", "nystrom", "gamma"}))
     ->capture_default_str();
-  cmd->add_option("--samples", o.samples, "Nyström samples (default: one more than the K-means clusters)");
+  cmd->add_option("--samples", o.samples, "Nyström samples (default: one more than the K-means clusters)")->check(Count(0, max_samples));
   cmd->add_flag("--no-graph-cut", o.no_graph_cut, "skip the graph-cut boundary enhancement");
   cmd->add_option("--graph-cut-backend", o.graph_cut_backend,
                   "max-flow code of the graph cut: maxflow (fastest, GPL), boost-csr or boost-list (LGPL)")
     ->check(CLI::IsMember({"default", "maxflow", "boost-csr", "boost-list"}))
     ->capture_default_str();
-  cmd->add_option("--threads", o.threads, "threads (0 = all); the labels do not depend on it");
-  cmd->add_option("--seed", o.seed, "seed of the sampling's start face")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "threads (0 = all); the labels do not depend on it")->check(Count(0, 4096));
+  cmd->add_option("--seed", o.seed, "seed of the sampling's start face")->capture_default_str()->check(Count(0, UINT32_MAX));
   cmd->add_option("--extra-clusters", o.extra_clusters,
                   "K-means makes k + N clusters, then the segments with the weakest (least concave) boundaries "
-                  "are merged until k are left (0: the thesis's method)")->capture_default_str();
+                  "are merged until k are left (0: the thesis's method)")->capture_default_str()->check(Count(0, max_clusters));
   add_salient_cut_options(*cmd, o.salient);
   cmd->add_option("--labels", o.labels, "output: one segment label per face of the file, in file order")->required();
   cmd->add_option("--mesh", o.out_mesh, "output: the mesh with one colour per segment (.ply or .off)");
@@ -140,10 +142,7 @@ int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const 
     }
     t["total"] = total;
     report["timings_seconds"] = t;
-    std::ofstream js(o.json);
-    if(!js)
-      throw SpectralSeg::Io_error("cannot write '" + o.json + "'");
-    js << report.dump(2) << "\n";
+    SpectralSeg::IO::write_text_file(o.json, report.dump(2) + "\n");
     std::cout << "json: " << o.json << "\n";
   }
   return 0;
@@ -174,12 +173,11 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     {
       used = 0;
     }
-    if(used != o.k.size() || v < 1)
-      throw SpectralSeg::Invalid_input("--k must be a positive integer or 'auto' (got '" + o.k + "')");
+    if(used != o.k.size() || v < 1 || v > static_cast<long long>(max_clusters))
+      throw Usage_error("--k must be a positive integer up to " + std::to_string(max_clusters) + " or 'auto' (got '" + o.k + "')");
     k = static_cast<std::size_t>(v);
   }
-  if(k == 0 && o.max_k < 2)
-    throw SpectralSeg::Invalid_input("--max-k must be at least 2");
+  check_outputs_writable({o.labels, o.out_mesh, o.png, o.json});
 
   const Loaded_mesh m(o.mesh, out);
   lap("read");
@@ -194,6 +192,8 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     t0 = clock::now();
     return write_segment_outputs(o, m, labels, exec, "", report, timings, lap);
   }
+  check_segmentation_fits(n, k == 0 ? std::min(o.max_k, n - 1) : std::min(k + o.extra_clusters, n - 1), o.sampling,
+                          o.samples, SpectralSeg::Embedding::Embedding_options().exact_face_limit);
   const SpectralSeg::Metrics::Any_weight metric = make_metric(o.metric);
   const std::vector<double> weights = metric(m.graph, exec);
   const SpectralSeg::Weighted_dual_graph weighted(m.graph, weights);

@@ -6,17 +6,49 @@
 #include "command_info.h"
 #include "command_render.h"
 #include "command_segment.h"
+#include "Argument_checks.h"
 
 #include <SpectralSeg/exceptions.h>
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
+#include <new>
+
+namespace {
+
+// Exit codes (user manual, "Exit status").
+constexpr int exit_ok = 0;
+constexpr int exit_failure = 1; // bad input, a failed computation or write
+constexpr int exit_usage = 2;   // arguments that make no sense
+
+// Flushes standard output and reports a write error (a full disk, a closed
+// pipe): results the user asked for must not vanish silently.
+int finish(int code)
+{
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+  if(failed)
+  {
+    std::fprintf(stderr, "error: cannot write to standard output: %s\n", std::strerror(errno != 0 ? errno : EIO));
+    return code == exit_ok ? exit_failure : code;
+  }
+  return code;
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
   using namespace spectralseg_cli;
+  // over a file-size limit (ulimit -f), writes fail with EFBIG and are
+  // reported, instead of the process being killed with a half-written file
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"spectralseg: part-aware spectral segmentation of triangle meshes"};
   app.require_subcommand(1);
   app.fallthrough();
@@ -35,30 +67,57 @@ int main(int argc, char** argv)
   Render_command_options render;
   add_render_command(app, render);
 
-  CLI11_PARSE(app, argc, argv);
+  try
+  {
+    app.parse(argc, argv);
+    check_no_empty_values(app);
+  }
+  catch(const CLI::ParseError& e)
+  {
+    // --help and --version are "errors" of code 0; CLI11's own codes (106, 109...) become 2
+    return finish(app.exit(e) == 0 ? exit_ok : exit_usage);
+  }
+  catch(const Usage_error& e)
+  {
+    std::cerr << "error: " << e.what() << "\nRun with --help for more information." << std::endl;
+    return finish(exit_usage);
+  }
   Progress_printer out(quiet);
   try
   {
     if(app.got_subcommand("info"))
-      return run_info(info, out);
+      return finish(run_info(info, out));
     if(app.got_subcommand("distance"))
-      return run_distance(distance, out);
+      return finish(run_distance(distance, out));
     if(app.got_subcommand("segment"))
-      return run_segment(segment, out);
+      return finish(run_segment(segment, out));
     if(app.got_subcommand("eval"))
-      return run_eval(eval, out);
+      return finish(run_eval(eval, out));
     if(app.got_subcommand("render"))
-      return run_render(render, out);
+      return finish(run_render(render, out));
+  }
+  catch(const Usage_error& e)
+  {
+    std::cerr << "error: " << e.what() << std::endl;
+    return finish(exit_usage);
   }
   catch(const SpectralSeg::Error& e)
   {
     std::cerr << "error: " << e.what() << std::endl;
-    return 1;
+    return finish(exit_failure);
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "error: out of memory: the computation needs more memory than this machine allows it; "
+                 "try a smaller mesh, or for 'segment' fewer --samples, a smaller --k or --max-k, or "
+                 "--sampling nystrom"
+              << std::endl;
+    return finish(exit_failure);
   }
   catch(const std::exception& e)
   {
     std::cerr << "error: " << e.what() << std::endl;
-    return 2;
+    return finish(exit_failure);
   }
-  return 0;
+  return finish(exit_ok);
 }

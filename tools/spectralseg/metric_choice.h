@@ -13,6 +13,8 @@
 #include <SpectralSeg/Ray_casting/Embree_ray_caster.h>
 #endif
 
+#include "Argument_checks.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -40,13 +42,13 @@ inline void add_metric_options(CLI::App& cmd, Metric_options& o)
                  "'blend' is a synonym of part-aware")
     ->check(CLI::IsMember({"part-aware", "blend", "geodesic", "angular", "vsi"}))
     ->capture_default_str();
-  cmd.add_option("--weights", o.weights,
-                 "part-aware coefficients geodesic,angular[,vsi] (each component is normalised to [0,1] "
-                 "first; the coefficients are scaled to add up to 1)")
-    ->delimiter(',')
-    ->expected(2, 3)
+  cmd.add_option_function<std::string>(
+       "--weights",
+       [&o](const std::string& text) { o.weights = parse_number_list("--weights", text, 2, 3, 1e6); },
+       "part-aware coefficients geodesic,angular[,vsi], each from 0 to 1e6, not all 0 (each component is "
+       "normalised to [0,1] first; the coefficients are scaled to add up to 1)")
     ->type_name("A,B[,C]")
-    ->capture_default_str();
+    ->default_str("0.01,0.195,0.795");
   std::vector<std::string> casters{"aabb"};
 #ifdef SPECTRALSEG_HAS_EMBREE
   casters.push_back("embree");
@@ -61,7 +63,7 @@ inline void add_metric_options(CLI::App& cmd, Metric_options& o)
     ->capture_default_str();
   cmd.add_option("--vsi-fraction", o.vsi_fraction,
                  "fraction of the faces whose shape image is ray-cast (the rest are interpolated)")
-    ->check(CLI::Range(0.0, 1.0))
+    ->check(Finite_range(0.0, 1.0))
     ->capture_default_str();
 }
 

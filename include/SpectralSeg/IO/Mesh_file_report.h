@@ -29,6 +29,7 @@ struct Mesh_file_report
   std::size_t duplicate_faces = 0;        ///< faces repeating another's vertex set, dropped
   std::size_t non_manifold_edges = 0;     ///< edges shared by more than two faces in the file
   std::size_t split_vertices = 0;         ///< vertices duplicated to make the mesh manifold
+  std::size_t ignored_elements = 0;       ///< elements that are not faces (OBJ `l` polylines and `p` points), ignored
   bool closed = false;                    ///< whether the resulting mesh has no border edge
 
   /// for each face of the file, the mesh face carrying its values (the
@@ -55,6 +56,7 @@ struct Mesh_file_report
     say(duplicate_faces, "duplicate faces dropped (outputs give them the value of the face they repeat)");
     say(non_manifold_edges, "non-manifold edges split: faces across them are not adjacent");
     say(split_vertices, "vertices duplicated to make the mesh manifold");
+    say(ignored_elements, "line or point elements ignored (only faces are read)");
   }
 };
 

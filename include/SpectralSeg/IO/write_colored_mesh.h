@@ -5,12 +5,12 @@
 #ifndef SPECTRALSEG_IO_WRITE_COLORED_MESH_H
 #define SPECTRALSEG_IO_WRITE_COLORED_MESH_H
 
+#include <SpectralSeg/IO/Atomic_output_file.h>
 #include <SpectralSeg/Mesh_geometry.h>
 #include <SpectralSeg/Rendering/Color_map.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <algorithm>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <string>
@@ -23,7 +23,9 @@ namespace IO {
 /// \brief Writes the triangles of `geometry` with one RGB colour per face,
 /// as ASCII PLY (`.ply`: face properties `red green blue`) or OFF (`.off`:
 /// colour components after each face's vertex indices), chosen by extension.
-/// \throws Io_error if the file cannot be written or the extension is neither
+/// The file is written all or nothing (`Atomic_output_file`).
+/// \throws Io_error if the file cannot be written (an existing file is then
+/// left unchanged) or the extension is neither
 /// \throws Invalid_input if there is not one colour per face
 inline void write_colored_mesh(const std::string& path, const Mesh_geometry& geometry,
                                const std::vector<Rendering::Rgb>& colors)
@@ -35,9 +37,8 @@ inline void write_colored_mesh(const std::string& path, const Mesh_geometry& geo
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if(ext != "ply" && ext != "off")
     throw Io_error("'" + path + "': coloured meshes are written as .ply or .off");
-  std::ofstream out(path);
-  if(!out)
-    throw Io_error("cannot write '" + path + "'");
+  Atomic_output_file file(path);
+  std::ostream& out = file.stream();
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
   if(ext == "ply")
     out << "ply\nformat ascii 1.0\ncomment written by SpectralSeg\nelement vertex " << geometry.number_of_vertices()
@@ -54,8 +55,7 @@ inline void write_colored_mesh(const std::string& path, const Mesh_geometry& geo
     out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << int(colors[f].r) << ' ' << int(colors[f].g) << ' '
         << int(colors[f].b) << '\n';
   }
-  if(!out)
-    throw Io_error("error while writing '" + path + "'");
+  file.commit();
 }
 
 } // namespace IO

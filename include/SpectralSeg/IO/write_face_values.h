@@ -5,11 +5,11 @@
 #ifndef SPECTRALSEG_IO_WRITE_FACE_VALUES_H
 #define SPECTRALSEG_IO_WRITE_FACE_VALUES_H
 
+#include <SpectralSeg/IO/Atomic_output_file.h>
 #include <SpectralSeg/IO/Mesh_file_report.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <string>
@@ -38,12 +38,12 @@ std::vector<T> values_in_input_order(const Mesh_file_report& report, const std::
 /// \ingroup PkgSpectralSegIO
 /// \brief Writes one value per line: `inf` for an infinite value (an
 /// unreachable face), `nan` for a face without value, full precision.
-/// \throws Io_error if the file cannot be written
+/// The file is written all or nothing (`Atomic_output_file`).
+/// \throws Io_error if the file cannot be written; an existing file is then left unchanged
 inline void write_face_values(const std::string& path, const std::vector<double>& values)
 {
-  std::ofstream out(path);
-  if(!out)
-    throw Io_error("cannot write '" + path + "'");
+  Atomic_output_file file(path);
+  std::ostream& out = file.stream();
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
   for(double v : values)
   {
@@ -54,22 +54,18 @@ inline void write_face_values(const std::string& path, const std::vector<double>
     else
       out << v << '\n';
   }
-  if(!out)
-    throw Io_error("error while writing '" + path + "'");
+  file.commit();
 }
 
 /// \ingroup PkgSpectralSegIO
-/// \brief Writes one integer label per line.
-/// \throws Io_error if the file cannot be written
+/// \brief Writes one integer label per line, all or nothing (`Atomic_output_file`).
+/// \throws Io_error if the file cannot be written; an existing file is then left unchanged
 inline void write_face_values(const std::string& path, const std::vector<int>& labels)
 {
-  std::ofstream out(path);
-  if(!out)
-    throw Io_error("cannot write '" + path + "'");
+  Atomic_output_file file(path);
   for(int v : labels)
-    out << v << '\n';
-  if(!out)
-    throw Io_error("error while writing '" + path + "'");
+    file.stream() << v << '\n';
+  file.commit();
 }
 
 } // namespace IO

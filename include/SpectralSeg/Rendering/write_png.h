@@ -5,6 +5,7 @@
 #ifndef SPECTRALSEG_RENDERING_WRITE_PNG_H
 #define SPECTRALSEG_RENDERING_WRITE_PNG_H
 
+#include <SpectralSeg/IO/Atomic_output_file.h>
 #include <SpectralSeg/Rendering/Image.h>
 #include <SpectralSeg/exceptions.h>
 
@@ -99,7 +100,7 @@ inline bool write_png_stream(std::FILE* file, const Image& img, Png_error_state&
 /// \param img the image; must be at least 1x1 with `3 * width * height` bytes
 /// \throws SpectralSeg::Invalid_input if the image is empty or inconsistent
 /// \throws SpectralSeg::Io_error if the file cannot be opened or written; the
-///         message names `path`
+///         message names `path`, and an existing file is left unchanged
 inline void write_png(const std::string& path, const Image& img)
 {
   if(img.width <= 0 || img.height <= 0)
@@ -110,19 +111,11 @@ inline void write_png(const std::string& path, const Image& img)
     throw Invalid_input("write_png: image buffer size does not match its dimensions for '"
                                 + path + "'");
 
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if(file == nullptr)
-    throw SpectralSeg::Io_error("write_png: cannot open '" + path + "' for writing: "
-                             + std::strerror(errno));
-
+  IO::Atomic_output_file file(path); // all or nothing: an old picture survives a failed write
   internal::Png_error_state state{};
-  const bool encoded = internal::write_png_stream(file, img, state);
-  const bool flushed = std::fflush(file) == 0 && !std::ferror(file);
-  const bool closed = std::fclose(file) == 0;
-  if(!encoded)
+  if(!internal::write_png_stream(file.file(), img, state))
     throw SpectralSeg::Io_error("write_png: cannot write '" + path + "': " + state.message);
-  if(!flushed || !closed)
-    throw SpectralSeg::Io_error("write_png: cannot write '" + path + "': " + std::strerror(errno));
+  file.commit();
 }
 
 } // namespace Rendering
