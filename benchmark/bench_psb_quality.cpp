@@ -97,7 +97,7 @@ struct Options
   double samples_factor = 0; // experiment: Nyström samples = factor * k + 1
   double vsi_fraction = 0.01;
   double eta = 0.1, min_part_area = SpectralSeg::Automatic_segmentation_options<>().min_part_area_fraction;
-  bool structure_only = false;
+  bool structure_only = false, perimeter_base = false;
   std::size_t auto_k = 0; // > 0: method kway chooses k itself, at most this many (method auto: default 20)
   double mu = 0.3;         // graph-cut smoothness
   bool mean_edge = false;  // graph cut: edge lengths over the mean edge length
@@ -242,6 +242,9 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
   so.segmentability.threshold = o.eta;
   so.segmentability.structure_only = o.structure_only;
   so.min_part_area_fraction = o.min_part_area;
+  if(o.perimeter_base)
+    std::get<2>(so.salience.terms()) =
+      SpectralSeg::Salience::Protrusion_term(SpectralSeg::Salience::Protrusion_term::Base::perimeter);
   return SpectralSeg::segment_automatically(g, SpectralSeg::sequence_weights(g, exec), so, exec).labels;
 }
 
@@ -337,6 +340,8 @@ int main(int argc, char** argv)
       o.min_part_area = std::stod(next());
     else if(a == "--structure-only")
       o.structure_only = true;
+    else if(a == "--perimeter-base")
+      o.perimeter_base = true;
     else if(a == "--methods")
       o.methods = split(next(), ',');
     else if(a == "--shard")

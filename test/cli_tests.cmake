@@ -106,6 +106,22 @@ endif()
 # --k auto stays within [2, --max-k]
 run_cli(0 "segments: ([2-9]|1[0-9]|20)\n" segment ${DATA}/elephant.off --k auto --labels ${WORK}/el_auto.seg -q)
 run_cli(0 "segments: [2-5]\n" segment ${DATA}/elephant.off --k auto --max-k 5 --labels ${WORK}/el_auto5.seg -q)
+# --auto-method salient-cuts: the thesis's ch. 6, its hierarchy in the JSON, cut to 3 parts or depth 1
+run_cli(0 "segments: [1-9][0-9]*\n.*json:" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts
+        --labels ${WORK}/el_sc.seg --json ${WORK}/el_sc.json -q)
+file(READ ${WORK}/el_sc.json sc_json)
+foreach(key "\"auto_method\": \"salient-cuts\"" "\"hierarchy\"" "\"test\": \"L" "\"salience\"" "\"segmentability\"")
+  string(FIND "${sc_json}" "${key}" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "salient-cuts JSON report lacks ${key}")
+  endif()
+endforeach()
+expect_lines(el_sc.seg 5558)
+run_cli(0 "segments: 3\n" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --parts 3 --labels ${WORK}/el_sc3.seg -q)
+run_cli(0 "segments: 2\n" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --depth 1 --labels ${WORK}/el_sc1.seg -q)
+run_cli(2 "--eta: 'nan'" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --eta nan --labels ${WORK}/q.seg)
+run_cli(2 "--parts: '0' is not a whole number" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --parts 0 --labels ${WORK}/q.seg)
+run_cli(2 "auto-method" segment ${DATA}/elephant.off --k auto --auto-method magic --labels ${WORK}/q.seg)
 run_cli(0 "rand_index_error: 0\n" eval --mesh ${DATA}/elephant.off ${WORK}/el.seg ${WORK}/el.seg)
 # render: a label file drawn with the default and with chosen views; bad views and label counts rejected
 file(REMOVE ${WORK}/el_render.png ${WORK}/el_render.ply)

@@ -6,6 +6,8 @@
 #ifndef SPECTRALSEG_TOOLS_SALIENT_CUT_SEGMENTATION_H
 #define SPECTRALSEG_TOOLS_SALIENT_CUT_SEGMENTATION_H
 
+#include "Argument_checks.h"
+
 #include <SpectralSeg/automatic_segmentation.h>
 
 #include <CLI/CLI.hpp>
@@ -38,19 +40,21 @@ inline void add_salient_cut_options(CLI::App& cmd, Salient_cut_options& o)
     ->check(CLI::IsMember({"merge", "salient-cuts"}))
     ->capture_default_str();
   cmd.add_option("--eta", o.eta, "salient-cuts: segmentability threshold (a piece is cut when a contour scores above it)")
-    ->check(CLI::Range(0., 1.))
+    ->check(Finite_range(0., 1.))
     ->capture_default_str();
   cmd.add_flag("--structure-only", o.structure_only, "salient-cuts: only the L-projection (structure) tests");
   cmd.add_option("--min-part-area", o.min_part_area,
                  "salient-cuts: no part under this fraction of its component's area (0: the thesis's behaviour)")
-    ->check(CLI::Range(0., 0.49))
+    ->check(Finite_range(0., 0.49))
     ->capture_default_str();
   cmd.add_option("--max-parts", o.max_parts, "salient-cuts: no cut once there are this many parts (0: no limit)")
-    ->capture_default_str();
+    ->capture_default_str()
+    ->check(Count(0, 1000000));
   cmd.add_option("--parts", o.parts,
                  "salient-cuts: keep only the first cuts, for this many parts (the hierarchy is still reported whole)")
-    ->check(CLI::PositiveNumber);
-  cmd.add_option("--depth", o.depth, "salient-cuts: stop every branch of the hierarchy at this depth (0: one part)");
+    ->check(Count(1, 1000000));
+  cmd.add_option("--depth", o.depth, "salient-cuts: stop every branch of the hierarchy at this depth (0: one part)")
+    ->check(Count(0, 1000000));
 }
 
 inline nlohmann::ordered_json hierarchy_json(const SpectralSeg::Part_hierarchy& h, std::size_t node)

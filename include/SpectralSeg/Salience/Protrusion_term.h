@@ -7,6 +7,8 @@
 
 #include <SpectralSeg/Salience/Cut_state.h>
 
+#include <CGAL/number_type_config.h>
+
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
@@ -30,10 +32,25 @@ namespace Salience {
 /// are updated as vertices join and leave the boundary, so each position
 /// costs \f$O(1)\f$ (one 3x3 eigenvalue problem).
 ///
+/// `Base::perimeter` (our variant) estimates the base instead as the area
+/// of a disk with the boundary's length, \f$l^2 / 4\pi\f$: a long seam
+/// across a body (which the covariance box sees as a thin, small base) then
+/// counts as a wide base, and a limb cut at its narrow root stays protrusive.
+///
 /// \cgalModels `SalienceTerm`
 class Protrusion_term : public Term_base
 {
 public:
+  /// how the base area is estimated
+  enum class Base
+  {
+    covariance, ///< \f$4\sqrt{\lambda_1\lambda_2}\f$ of the boundary vertices (the thesis)
+    perimeter   ///< \f$l^2 / 4\pi\f$, \f$l\f$ the boundary's length
+  };
+
+  /// \param base how the base area is estimated
+  explicit Protrusion_term(Base base = Base::covariance) : base_(base) {}
+
   /// `"protrusion"`
   std::string name() const { return "protrusion"; }
 
@@ -47,6 +64,18 @@ public:
     count_ = 0;
     sum_.setZero();
     outer_.setZero();
+    length_ = 0.;
+    edges_ = 0;
+  }
+  void add_boundary_edge(Mesh_piece::size_type e)
+  {
+    length_ += piece_->edge_length(e);
+    ++edges_;
+  }
+  void remove_boundary_edge(Mesh_piece::size_type e)
+  {
+    length_ -= piece_->edge_length(e);
+    --edges_;
   }
   void add_boundary_vertex(Mesh_piece::size_type v)
   {
@@ -67,6 +96,8 @@ public:
   /// the estimated base area of the current boundary
   double base_area() const
   {
+    if(base_ == Base::perimeter)
+      return edges_ > 0 ? std::max(0., length_) * std::max(0., length_) / (4. * CGAL_PI) : 0.;
     if(count_ < 2)
       return 0.;
     const double m = static_cast<double>(count_);
@@ -89,6 +120,9 @@ public:
   }
 
 private:
+  Base base_;
+  double length_ = 0.;
+  std::size_t edges_ = 0;
   const Mesh_piece* piece_ = nullptr;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   std::size_t count_ = 0;
