@@ -9,6 +9,7 @@
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/k_way_segmentation.h>
+#include <SpectralSeg/segment_hybrid.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -330,4 +331,34 @@ TEST_CASE("graph_cut_boundaries moves labels to the nearest proxy along a strip"
   }
   std::vector<int> bad(n - 1, 0);
   CHECK_THROWS_AS(Refinement::graph_cut_boundaries(graph, embedding, proxies, bad), Invalid_input);
+}
+
+TEST_CASE("hybrid segmentation finds the star's parts, deterministically, and checks its options", "[k_way][hybrid]")
+{
+  const Star& s = star();
+  const K_way_result r = segment_hybrid(s.weighted);
+  INFO("segments " << r.number_of_segments);
+  CHECK(r.number_of_segments >= 2);
+  CHECK(r.number_of_segments <= Hybrid_options().clusters);
+  CHECK(Evaluation::rand_index_error(r.labels, s.soup.face_part) < 0.1);
+  const K_way_result r1 = segment_hybrid(s.weighted, Hybrid_options(), Execution(1));
+  const K_way_result r4 = segment_hybrid(s.weighted, Hybrid_options(), Execution(4));
+  CHECK(r1.labels == r4.labels);
+  // an unreachable limit merges down to min_segments
+  Hybrid_options all;
+  all.min_boundary_contrast = 1e6;
+  all.min_segments = 1;
+  CHECK(segment_hybrid(s.weighted, all).number_of_segments == 1);
+  Hybrid_options bad;
+  bad.clusters = 1;
+  CHECK_THROWS_AS(segment_hybrid(s.weighted, bad), Invalid_input);
+  bad = Hybrid_options();
+  bad.min_segments = 0;
+  CHECK_THROWS_AS(segment_hybrid(s.weighted, bad), Invalid_input);
+  for(double c : {0., -1., std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
+  {
+    bad = Hybrid_options();
+    bad.min_boundary_contrast = c;
+    CHECK_THROWS_AS(segment_hybrid(s.weighted, bad), Invalid_input);
+  }
 }

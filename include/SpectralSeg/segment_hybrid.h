@@ -1,0 +1,287 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file segment_hybrid.h
+/// \brief Automatic segmentation by over-segmenting in the spectral embedding
+/// and merging across the boundaries that are weak by both concavity and the
+/// part-aware metric (our addition).
+#ifndef SPECTRALSEG_SEGMENT_HYBRID_H
+#define SPECTRALSEG_SEGMENT_HYBRID_H
+
+#include <SpectralSeg/Clustering/Kmeans.h>
+#include <SpectralSeg/K_way_options.h>
+#include <SpectralSeg/Refinement/connected_segments.h>
+#include <SpectralSeg/Refinement/graph_cut_boundaries.h>
+#include <SpectralSeg/Refinement/merge_segments.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
+#include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/Stage_timer.h>
+#include <SpectralSeg/segment_k_way.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief Parameters of `segment_hybrid()`.
+///
+/// \tparam AffinityKernel a model of `AffinityKernel`
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+struct Basic_hybrid_options
+{
+  /// the embedding, K-means and graph-cut settings, the affinity kernel and
+  /// `merge_min_area_fraction` (0.005 by default: segments under 0.5% of the
+  /// area are merged first, whatever their boundary); `extra_clusters` and
+  /// `merge_strength_limit` are not used
+  Basic_K_way_options<AffinityKernel> k_way;
+  /// the number of K-means clusters of the over-segmentation (default 20);
+  /// at least 2
+  std::size_t clusters = 20;
+  /// merging never goes below this many segments (default 2); at least 1
+  std::size_t min_segments = 2;
+  /// merging stops once the weakest boundary's contrast reaches this
+  /// (default 4): the contrast of a boundary is the geometric mean of its
+  /// concave contrast (its mean concave dihedral angle over the mesh's) and
+  /// its metric contrast (its mean dual-edge weight over the mesh's), all
+  /// means weighted by edge length; finite and positive
+  double min_boundary_contrast = 4.;
+};
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief The options of `segment_hybrid()` with the exponential kernel, the
+/// default.
+typedef Basic_hybrid_options<Kernels::Exponential_kernel> Hybrid_options;
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Merges adjacent segments, weakest boundary first: segments under
+// `small` area first (smallest first, whatever their boundary), then the
+// pair with the lowest product of the two contrasts while it is below
+// `limit` and more than `min_segments` are left. Labels renumbered by their
+// smallest face; returns the number of segments.
+inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
+                                     std::vector<int>& labels, std::size_t min_segments, double limit,
+                                     double min_area_fraction)
+{
+  const std::size_t n = graph.number_of_faces();
+  std::map<int, int> dense;
+  for(int& l : labels)
+    l = dense.emplace(l, int(dense.size())).first->second;
+  const std::size_t s = dense.size();
+  // mesh means, weighted by edge length
+  double length = 0., concave = 0., metric = 0.;
+  for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
+  {
+    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
+    length += e.length;
+    concave += e.concave ? e.length * e.normal_angle : 0.;
+    metric += e.length * weights[d];
+  }
+  const double mean_concave = length > 0. ? concave / length : 0.;
+  const double mean_metric = length > 0. ? metric / length : 0.;
+  struct Boundary
+  {
+    double length = 0., concave = 0., metric = 0.;
+  };
+  std::vector<std::map<std::size_t, Boundary>> boundary(s);
+  for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
+  {
+    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
+    const std::size_t a = std::size_t(labels[e.face[0]]), b = std::size_t(labels[e.face[1]]);
+    if(a == b)
+      continue;
+    for(Boundary* x : {&boundary[a][b], &boundary[b][a]})
+    {
+      x->length += e.length;
+      x->concave += e.concave ? e.length * e.normal_angle : 0.;
+      x->metric += e.length * weights[d];
+    }
+  }
+  // a flat or convex mesh (or a zero metric) gives no contrast: such
+  // boundaries are weak
+  const auto strength = [&](const Boundary& x) {
+    const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
+    const double m = mean_metric > 0. ? x.metric / x.length / mean_metric : 0.;
+    return c * m;
+  };
+  std::vector<double> area(s, 0.);
+  double total_area = 0.;
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    area[std::size_t(labels[f])] += graph.geometry().areas[f];
+    total_area += graph.geometry().areas[f];
+  }
+  const double small = min_area_fraction * total_area;
+  std::vector<std::size_t> target(s);
+  for(std::size_t i = 0; i < s; ++i)
+    target[i] = i;
+  for(std::size_t count = s; count > min_segments; --count)
+  {
+    double cheapest = std::numeric_limits<double>::infinity();
+    std::size_t wa = s, wb = s;
+    for(std::size_t a = 0; a < s; ++a)
+      for(const auto& nb : boundary[a])
+      {
+        const std::size_t b = nb.first;
+        if(b < a || nb.second.length <= 0.)
+          continue;
+        double cost;
+        if(std::min(area[a], area[b]) < small)
+          cost = -1. + std::min(area[a], area[b]) / small; // in [-1, 0): before every boundary
+        else
+        {
+          cost = strength(nb.second);
+          if(cost >= limit)
+            continue;
+        }
+        if(cost < cheapest) // strict: ties go to the smallest labels
+        {
+          cheapest = cost;
+          wa = a;
+          wb = b;
+        }
+      }
+    if(wa == s)
+      break;
+    boundary[wa].erase(wb);
+    for(const auto& nb : boundary[wb])
+    {
+      if(nb.first == wa)
+        continue;
+      Boundary& x = boundary[wa][nb.first];
+      x.length += nb.second.length;
+      x.concave += nb.second.concave;
+      x.metric += nb.second.metric;
+      boundary[nb.first].erase(wb);
+      boundary[nb.first][wa] = x;
+    }
+    boundary[wb].clear();
+    area[wa] += area[wb];
+    for(std::size_t& t : target)
+      if(t == wb)
+        t = wa;
+  }
+  std::map<int, int> renumber;
+  for(int& l : labels)
+    l = renumber.emplace(int(target[std::size_t(l)]), int(renumber.size())).first->second;
+  return renumber.size();
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegAutomatic
+/// \brief Segments the faces of a weighted dual graph into a number of parts
+/// it chooses itself (our addition; it builds on the k-way method of thesis
+/// ch. 4 and 5).
+///
+/// 1. spectral embedding in `options.clusters` dimensions (exact for small
+///    meshes, Nyström for large ones, `options.k_way.embedding`) and
+///    K-means into `options.clusters` clusters, as in `segment_k_way()`;
+///    the clusters are made connected regions;
+/// 2. segments under `options.k_way.merge_min_area_fraction` of the area are
+///    merged into a neighbour, smallest first;
+/// 3. the two adjacent segments whose boundary has the lowest contrast are
+///    merged, for as long as that contrast is below
+///    `options.min_boundary_contrast` and more than `options.min_segments`
+///    are left. The contrast of a boundary is the geometric mean of two
+///    ratios, both means weighted by edge length: its mean concave dihedral
+///    angle over the mesh's (parts meet at concave creases) and its mean
+///    dual-edge weight (`graph.weights()`, the part-aware metric in the
+///    usual pipeline) over the mesh's (parts differ in thickness, which the
+///    volumetric term of the metric sees). A boundary is kept only when both
+///    say it separates parts, so K-means' cuts through smooth bodies and
+///    through creased but uniform regions are both undone. Both ratios are
+///    relative to the mesh, so the limit does not depend on resolution or
+///    scale;
+/// 4. graph-cut boundary enhancement on the merged segments, their mean
+///    embedding as proxies (optional, `options.k_way.boundary_enhancement`;
+///    skipped when connected components leave more segments than clusters),
+///    and every segment made one connected region.
+///
+/// On a mesh without concave edges every boundary has contrast 0 and the
+/// merge goes down to `options.min_segments`. Segments with no neighbour
+/// (whole connected components) are never merged. The result is
+/// deterministic and does not depend on the number of threads.
+///
+/// \tparam AffinityKernel a model of `AffinityKernel`
+/// \param graph the dual graph weighted by a metric
+/// \param options the parameters
+/// \param exec threads and progress callback
+/// \throws Invalid_input if `options.clusters` is below 2,
+///         `options.min_segments` is 0, or `options.min_boundary_contrast`
+///         is not finite and positive
+/// \throws Error if the affinity matrix has no positive eigenvalue after the first
+/// \throws Operation_cancelled if the progress callback asks to stop
+template <typename AffinityKernel = Kernels::Exponential_kernel>
+K_way_result segment_hybrid(const Weighted_dual_graph& graph,
+                            const Basic_hybrid_options<AffinityKernel>& options = Basic_hybrid_options<AffinityKernel>(),
+                            const Execution& exec = Execution())
+{
+  if(options.clusters < 2)
+    throw Invalid_input("hybrid segmentation: the number of clusters must be at least 2");
+  if(options.min_segments < 1)
+    throw Invalid_input("hybrid segmentation: the smallest number of segments must be at least 1");
+  if(!std::isfinite(options.min_boundary_contrast) || !(options.min_boundary_contrast > 0.))
+    throw Invalid_input("hybrid segmentation: the boundary contrast limit must be finite and positive");
+  const std::size_t n = graph.graph().number_of_faces();
+  K_way_result r;
+  internal::Stage_timer lap(r.timings);
+  if(n < 3)
+  {
+    r.labels.assign(n, 0);
+    r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+    return r;
+  }
+  const std::size_t clusters = std::min(options.clusters, n - 1);
+  r.embedding = internal::embed(graph, clusters, options.k_way.kernel, options.k_way.embedding, exec);
+  lap("embedding");
+  if(r.embedding.coordinates.cols() == 0)
+    throw Error("hybrid segmentation: the affinity matrix has no positive eigenvalue after the first");
+  exec.report("k-means", 0.);
+  std::vector<std::size_t> seeds;
+  if(!r.embedding.exact && options.k_way.seed_with_samples)
+    for(std::size_t i = 0; i < clusters && i < r.embedding.samples.size(); ++i)
+      seeds.push_back(r.embedding.samples[i]);
+  r.clusters = Clustering::kmeans(r.embedding.coordinates, clusters, seeds, options.k_way.kmeans_iterations, exec);
+  exec.report("k-means", 1.);
+  lap("k-means");
+  r.labels = r.clusters.labels;
+  Refinement::make_segments_connected(graph.graph(), r.labels);
+  const double limit = options.min_boundary_contrast * options.min_boundary_contrast;
+  const std::size_t m = internal::merge_by_contrast(graph.graph(), graph.weights(), r.labels, options.min_segments,
+                                                    limit, options.k_way.merge_min_area_fraction);
+  lap("merge");
+  // with more segments than clusters (a mesh of many connected components)
+  // a graph cut on that many labels would crawl: it is skipped there
+  if(options.k_way.boundary_enhancement && m > 1 && m <= clusters)
+  {
+    Eigen::MatrixXd proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), r.embedding.coordinates.cols());
+    std::vector<double> count(m, 0.);
+    for(std::size_t f = 0; f < n; ++f) // in face order: thread-independent
+    {
+      proxies.row(r.labels[f]) += r.embedding.coordinates.row(static_cast<Eigen::Index>(f));
+      count[std::size_t(r.labels[f])] += 1.;
+    }
+    for(std::size_t c = 0; c < m; ++c)
+      proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
+    exec.report("graph cut", 0.);
+    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, proxies, r.labels,
+                                     options.k_way.graph_cut);
+    exec.report("graph cut", 1.);
+    lap("graph cut");
+  }
+  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+  lap("connected segments");
+  return r;
+}
+
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_SEGMENT_HYBRID_H
