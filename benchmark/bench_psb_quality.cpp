@@ -9,8 +9,9 @@
 // humans, then over the models).
 //
 // usage: bench_psb_quality PSB_DIR [options]
-//   --methods kway,auto,salient,sdf methods to run (default kway): k-way with the humans' k, k-way
-//                           choosing k itself (segment_k_way_automatic), the thesis's recursive salient
+//   --methods kway,contrast,auto,salient,sdf methods to run (default kway): k-way with the humans' k,
+//                           the default automatic method (segment_hybrid: over-segment, merge by concave and
+//                           metric contrast), k-way choosing k by concavity (segment_k_way_automatic), the thesis's recursive salient
 //                           cuts (segment_automatically, ch. 6), CGAL's SDF segmentation (the peer)
 //   --eta E  --min-part-area F  --structure-only   parameters of the salient-cut method
 //   --markdown FILE.md      also write the tables to this file
@@ -30,6 +31,7 @@
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/automatic_segmentation.h>
+#include <SpectralSeg/segment_hybrid.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
@@ -89,7 +91,8 @@ struct Options
   std::string normalization = "p99"; // p99 (the library's default) or max (the thesis)
   std::size_t samples = 0;
   int extra_clusters = -1;
-  double auto_contrast = 3;  // automatic k: merge while the weakest boundary's contrast is below this
+  double auto_contrast = 3;
+  bool auto_contrast_given = false;  // automatic k: merge while the weakest boundary's contrast is below this
   double auto_spectrum = 0;  // > 0: --auto-k uses choose_number_of_segments with this threshold instead
   unsigned seed = 0;         // start face of the Nyström sampling
   std::string markdown;      // also write the tables to this file
@@ -235,6 +238,25 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   return r.labels;
 }
 
+// the default automatic method: over-segment and merge by concave and metric contrast
+std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g)
+{
+  const SpectralSeg::Execution exec(o.threads);
+  std::vector<double> w;
+#ifdef SPECTRALSEG_HAS_EMBREE
+  if(o.ray_caster == "embree")
+    w = part_aware<SpectralSeg::Ray_casting::Embree_ray_caster>(o, g, exec);
+  else
+#endif
+    w = part_aware<SpectralSeg::Ray_casting::AABB_ray_caster>(o, g, exec);
+  const SpectralSeg::Weighted_dual_graph wg(g, w);
+  SpectralSeg::Hybrid_options ho;
+  ho.k_way.boundary_enhancement = o.graph_cut;
+  if(o.auto_contrast > 0 && o.auto_contrast_given)
+    ho.min_boundary_contrast = o.auto_contrast;
+  return SpectralSeg::segment_hybrid(wg, ho, exec).labels;
+}
+
 std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
 {
   const SpectralSeg::Execution exec(o.threads);
@@ -377,7 +399,10 @@ int main(int argc, char** argv)
     else if(a == "--auto-k")
       o.auto_k = std::stoul(next());
     else if(a == "--auto-contrast")
+    {
       o.auto_contrast = std::stod(next());
+      o.auto_contrast_given = true;
+    }
     else if(a == "--auto-spectrum")
       o.auto_spectrum = std::stod(next());
     else if(a == "--markdown")
@@ -437,13 +462,14 @@ int main(int argc, char** argv)
     for(const std::string& method : o.methods)
     {
       const auto t0 = std::chrono::steady_clock::now();
-      if(method != "sdf" && method != "kway" && method != "auto" && method != "salient")
-        throw std::runtime_error("unknown method '" + method + "' (kway, auto, salient or sdf)");
+      if(method != "sdf" && method != "kway" && method != "auto" && method != "salient" && method != "contrast")
+        throw std::runtime_error("unknown method '" + method + "' (kway, auto, contrast, salient or sdf)");
       Options mo = o;
       if(method == "auto" && mo.auto_k == 0)
         mo.auto_k = 20;
       const std::vector<int> labels = method == "sdf"       ? run_sdf(mesh)
                                       : method == "salient" ? run_salient(mo, g)
+                                      : method == "contrast" ? run_contrast(mo, g)
                                                             : run_kway(mo, g, k);
       const std::string method_name = method == "kway" && o.auto_k > 0 ? "kway-auto" : method;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

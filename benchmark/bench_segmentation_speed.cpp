@@ -9,7 +9,8 @@
 // usage: bench_segmentation_speed MESH METHOD [--k 10] [--faces N | --subdivisions L]
 //                                 [--threads 0] [--tsv] [--header] [--trace]
 //        bench_segmentation_speed --methods
-//   METHOD        spectralseg (k-way, AABB ray casting), spectralseg-embree
+//   METHOD        spectralseg (k-way, AABB ray casting), spectralseg-embree, auto-contrast (the default
+//                 automatic method, default ray caster), auto-salient (the thesis's ch. 6 salient cuts)
 //                 (k-way, Embree ray casting; only if built with Embree),
 //                 cgal-sdf (CGAL::sdf_values + CGAL::segmentation_from_sdf_values,
 //                 single-threaded), or faces (print the face count of the
@@ -54,6 +55,8 @@
 #include "subdivide.h"
 #include "timing.h"
 
+#include <SpectralSeg/automatic_segmentation.h>
+#include <SpectralSeg/segment_hybrid.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/k_way_segmentation.h>
@@ -220,6 +223,36 @@ Run run_spectralseg(const Mesh& mesh, std::size_t k, unsigned threads, bool trac
   return r;
 }
 
+// The automatic methods: contrast merge (the default, part-aware metric) or
+// the thesis's salient cuts (no part-aware metric).
+Run run_automatic(const Mesh& mesh, bool salient, unsigned threads)
+{
+  const SpectralSeg::Execution exec(threads);
+  Run r;
+  r.threads = exec.threads();
+  const auto t0 = std::chrono::steady_clock::now();
+  const SpectralSeg::Dual_graph g = SpectralSeg::make_dual_graph(mesh);
+  if(salient)
+  {
+    const auto a = SpectralSeg::segment_automatically(g, SpectralSeg::sequence_weights(g, exec),
+                                                      SpectralSeg::Automatic_segmentation_options<>(), exec);
+    r.segments = a.number_of_segments;
+    r.clustering = seconds_since(t0);
+  }
+  else
+  {
+    const std::vector<double> w = SpectralSeg::Metrics::Part_aware_weight<>()(g, exec);
+    const SpectralSeg::Weighted_dual_graph wg(g, w);
+    r.metric = seconds_since(t0);
+    const auto t1 = std::chrono::steady_clock::now();
+    const SpectralSeg::K_way_result kr = SpectralSeg::segment_hybrid(wg, SpectralSeg::Hybrid_options(), exec);
+    r.segments = kr.number_of_segments;
+    r.clustering = seconds_since(t1);
+  }
+  r.total = seconds_since(t0);
+  return r;
+}
+
 Run run_cgal_sdf(Mesh& mesh, std::size_t k)
 {
   Run r;
@@ -247,7 +280,7 @@ std::string seconds_field(double s)
 int usage(const char* program)
 {
   std::fprintf(stderr,
-               "usage: %s MESH spectralseg|spectralseg-embree|cgal-sdf|faces [--k 10] [--faces N | --subdivisions L]\n"
+               "usage: %s MESH spectralseg|spectralseg-embree|auto-contrast|auto-salient|cgal-sdf|faces [--k 10] [--faces N | --subdivisions L]\n"
                "       [--threads 0] [--tsv] [--header] [--trace]\n"
                "       %s --methods\n",
                program, program);
@@ -360,6 +393,8 @@ int main(int argc, char** argv)
 #endif
     else if(method == "spectralseg")
       r = run_spectralseg<SpectralSeg::Ray_casting::AABB_ray_caster>(mesh, k, threads, trace);
+    else if(method == "auto-contrast" || method == "auto-salient")
+      r = run_automatic(mesh, method == "auto-salient", threads);
     else
     {
       std::fprintf(stderr, "unknown method %s (see --methods)\n", method.c_str());

@@ -4,6 +4,7 @@
 // bending samples, O(1) salience updates, closing, hierarchy, threads.
 #include "test_meshes.h"
 
+#include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/automatic_segmentation.h>
 #include <SpectralSeg/Refinement/connected_segments.h>
 #include <SpectralSeg/evaluation.h>
@@ -293,4 +294,31 @@ TEST_CASE("automatic segmentation of the star: parts, hierarchy, threads", "[aut
   for(const Part_node& n : r3.hierarchy.nodes)
     if(n.tested)
       CHECK(std::isnan(n.scores[2]));
+}
+
+TEST_CASE("automatic_segmentation(): the mesh entry point and its methods", "[automatic]")
+{
+  Shape s(test_meshes::star(2));
+  auto part = s.mesh.add_property_map<Mesh::Face_index, int>("f:auto_part", -1).first;
+  namespace P = SpectralSeg::parameters;
+  // the default: contrast merge, as segment_hybrid() on the part-aware graph
+  const std::size_t n = automatic_segmentation(s.mesh, part, P::number_of_threads(1));
+  const std::vector<double> w = Metrics::Part_aware_weight<>()(s.graph);
+  const Weighted_dual_graph wg(s.graph, w);
+  const K_way_result expected = segment_hybrid(wg, Hybrid_options(), Execution(1));
+  CHECK(n == expected.number_of_segments);
+  for(auto f : s.mesh.faces())
+    CHECK(part[f] == expected.labels[f.idx()]);
+  CHECK(Evaluation::rand_index_error(expected.labels, s.soup.face_part) < 0.1);
+  // salient cuts, with the hierarchy
+  Part_hierarchy h;
+  const std::size_t m = automatic_segmentation(
+    s.mesh, part, P::automatic_method(Automatic_method::salient_cuts).part_hierarchy(&h).min_part_area_fraction(0.02));
+  CHECK(m == h.number_of_parts());
+  const std::vector<int> leaves = h.labels();
+  for(auto f : s.mesh.faces())
+    CHECK(part[f] == leaves[f.idx()]);
+  CHECK_THROWS_AS(automatic_segmentation(s.mesh, part, P::automatic_method(Automatic_method::salient_cuts)
+                                                         .segmentability_threshold(-1.)),
+                  Invalid_input);
 }

@@ -20,6 +20,7 @@
 #include <SpectralSeg/Segmentability/segmentability.h>
 #include <SpectralSeg/k_way_segmentation.h>
 #include <SpectralSeg/named_parameters.h>
+#include <SpectralSeg/segment_hybrid.h>
 
 #include <chrono>
 #include <queue>
@@ -305,10 +306,13 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
 /// \brief The methods of `automatic_segmentation()`.
 enum class Automatic_method
 {
-  /// over-segment and merge across weak boundaries
-  /// (`segment_k_way_automatic()`, our method): the default, the best on
-  /// psb-dev (figures in doc/benchmarks.md)
-  merge,
+  /// over-segment and merge while the weakest boundary is not both a
+  /// concave crease and a jump of the metric (`segment_hybrid()`, our
+  /// method): the default, the best on psb-dev (figures in doc/benchmarks.md)
+  contrast_merge,
+  /// over-segment and merge while the weakest boundary is weakly concave
+  /// (`segment_k_way_automatic()`, our earlier rule)
+  concave_merge,
   /// recursive salient cuts of the segmentable pieces
   /// (`segment_automatically()`, the thesis's chapter 6)
   salient_cuts
@@ -323,9 +327,14 @@ enum class Automatic_method
 /// segmentability test, each time at the most salient place along a face
 /// sequence (`segment_automatically()`); the cuts are kept in a
 /// `Part_hierarchy` that `part_hierarchy` receives. With
-/// `Automatic_method::merge` (the default) the mesh is over-segmented by
-/// spectral clustering and segments are merged across weak boundaries
-/// (`k_way_segmentation_automatic()`, whose named parameters apply).
+/// `Automatic_method::contrast_merge` (the default) the mesh is
+/// over-segmented by spectral clustering of the part-aware metric and
+/// segments are merged across weak boundaries (`segment_hybrid()`);
+/// `Automatic_method::concave_merge` is `k_way_segmentation_automatic()`.
+/// The named parameters of `k_way_segmentation_automatic()` apply to both
+/// merge methods (`max_number_of_segments` is the number of clusters of the
+/// over-segmentation; `min_boundary_contrast` defaults to 4 for
+/// `contrast_merge`).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 ///         with triangle faces oriented outward
@@ -337,14 +346,13 @@ enum class Automatic_method
 /// \param segments receives the part of each face, in `[0, returned value)`,
 ///        numbered by smallest face; each part is one connected region
 /// \param np an optional sequence of named parameters among those below;
-///        with `Automatic_method::merge`, those of
-///        `k_way_segmentation_automatic()` too
+///        with the merge methods, those of `k_way_segmentation_automatic()` too
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{automatic_method}
 ///     \cgalParamDescription{the method}
 ///     \cgalParamType{`Automatic_method`}
-///     \cgalParamDefault{`Automatic_method::merge`}
+///     \cgalParamDefault{`Automatic_method::contrast_merge`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{automatic_options}
 ///     \cgalParamDescription{every parameter of the salient-cut method (contour resolution, eigensolver, closing radii, part budget, salience model with its weights); the parameters below, when given, replace the fields they name}
@@ -367,7 +375,7 @@ enum class Automatic_method
 ///     \cgalParamDefault{0.02}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{part_hierarchy}
-///     \cgalParamDescription{receives the hierarchy of cuts (salient-cut method; left empty by the merge method)}
+///     \cgalParamDescription{receives the hierarchy of cuts (salient-cut method; left untouched by the merge methods)}
 ///     \cgalParamType{`Part_hierarchy*`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
@@ -401,9 +409,22 @@ std::size_t automatic_segmentation(const TriangleMesh& tm, SegmentMap segments,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const Automatic_method method =
-    choose_parameter(get_parameter(np, SpectralSeg::internal_np::automatic_method), Automatic_method::merge);
-  if(method == Automatic_method::merge)
+    choose_parameter(get_parameter(np, SpectralSeg::internal_np::automatic_method), Automatic_method::contrast_merge);
+  if(method == Automatic_method::concave_merge)
     return k_way_segmentation_automatic(tm, segments, np);
+  if(method == Automatic_method::contrast_merge)
+  {
+    const internal::Weighted_mesh_graph g(tm, np);
+    const auto k_way = internal::k_way_options_from(np);
+    Basic_hybrid_options<typename std::decay_t<decltype(k_way)>::Kernel_type> o;
+    o.k_way = k_way;
+    o.clusters = choose_parameter(get_parameter(np, SpectralSeg::internal_np::max_number_of_segments), o.clusters);
+    o.min_boundary_contrast =
+      choose_parameter(get_parameter(np, SpectralSeg::internal_np::min_boundary_contrast), o.min_boundary_contrast);
+    const K_way_result r = segment_hybrid(g.weighted, o, g.exec);
+    internal::put_labels(tm, r.labels, segments, np);
+    return r.number_of_segments;
+  }
   auto o = choose_parameter(get_parameter(np, SpectralSeg::internal_np::automatic_options),
                             Automatic_segmentation_options<>());
   o.segmentability.threshold = choose_parameter(get_parameter(np, SpectralSeg::internal_np::segmentability_threshold),

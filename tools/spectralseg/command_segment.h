@@ -42,7 +42,7 @@ struct Segment_options
   unsigned threads = 0;
   unsigned seed = 0;
   std::size_t extra_clusters = SpectralSeg::K_way_options().extra_clusters;
-  double min_boundary_contrast = 3.;
+  double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
   std::string labels, out_mesh, png, json;
   Salient_cut_options salient;
 };
@@ -54,13 +54,13 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
   cmd->add_option("--k", o.k,
                   "number of segments: a positive integer, or 'auto' to choose it (2 to --max-k): over-segment "
                   "into --max-k clusters, then merge across the weakest boundaries while their mean concave "
-                  "angle is below --min-boundary-contrast times the mesh's mean")
+                  "angle is below --min-boundary-contrast times the mesh's mean (see --auto-method)")
     ->required();
   cmd->add_option("--max-k", o.max_k, "largest k considered by --k auto")->capture_default_str()->check(Count(2, max_clusters));
   cmd->add_option("--min-boundary-contrast", o.min_boundary_contrast,
-                  "--k auto: segments are merged while their boundary's mean concave dihedral angle is below this "
-                  "many times the mean over the whole mesh")
-    ->capture_default_str()->check(Finite_range(0., 1e6));
+                  "--k auto, contrast-merge and concave-merge: segments are merged while their boundary's contrast "
+                  "to the whole mesh is below this (default 4 for contrast-merge, 3 for concave-merge)")
+    ->check(Finite_range(0., 1e6));
   add_metric_options(*cmd, o.metric);
   cmd->add_option("--kernel", o.kernel, "affinity kernel")
     ->check(CLI::IsMember({"exponential", "gaussian"}))
@@ -219,7 +219,17 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     SpectralSeg::Basic_K_way_automatic_options<std::decay_t<decltype(kernel)>> automatic;
     automatic.k_way = options.with_kernel(kernel);
     automatic.max_k = std::max<std::size_t>(2, std::min(o.max_k, n - 1));
-    automatic.min_boundary_contrast = o.min_boundary_contrast;
+    if(o.min_boundary_contrast > 0.)
+      automatic.min_boundary_contrast = o.min_boundary_contrast;
+    if(k == 0 && o.salient.method == "contrast-merge")
+    {
+      SpectralSeg::Basic_hybrid_options<std::decay_t<decltype(kernel)>> hybrid;
+      hybrid.k_way = automatic.k_way;
+      hybrid.clusters = automatic.max_k;
+      if(o.min_boundary_contrast > 0.)
+        hybrid.min_boundary_contrast = o.min_boundary_contrast;
+      return SpectralSeg::segment_hybrid(weighted, hybrid, exec);
+    }
     return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, automatic, exec)
                   : SpectralSeg::segment_k_way(weighted, k, automatic.k_way, exec);
   };

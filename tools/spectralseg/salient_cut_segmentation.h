@@ -9,6 +9,7 @@
 #include "Argument_checks.h"
 
 #include <SpectralSeg/automatic_segmentation.h>
+#include <SpectralSeg/segment_hybrid.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -22,7 +23,7 @@ namespace spectralseg_cli {
 
 struct Salient_cut_options
 {
-  std::string method = "merge";
+  std::string method = "contrast-merge";
   double eta = 0.1;
   bool structure_only = false;
   double min_part_area = SpectralSeg::Automatic_segmentation_options<>().min_part_area_fraction;
@@ -34,10 +35,11 @@ struct Salient_cut_options
 inline void add_salient_cut_options(CLI::App& cmd, Salient_cut_options& o)
 {
   cmd.add_option("--auto-method", o.method,
-                 "--k auto: merge (over-segment, then merge across weak boundaries; the default, best on "
-                 "psb-dev) or salient-cuts (the thesis's chapter 6: recursive cuts of the pieces that pass the "
-                 "segmentability test, at their most salient place)")
-    ->check(CLI::IsMember({"merge", "salient-cuts"}))
+                 "--k auto: contrast-merge (over-segment into --max-k clusters, merge while the weakest "
+                 "boundary is not both concave and a jump of the part-aware metric; the default, best on psb-dev), "
+                 "concave-merge (the same, judged by concavity alone) or salient-cuts (the thesis's chapter 6: "
+                 "recursive cuts of the pieces that pass the segmentability test, at their most salient place)")
+    ->check(CLI::IsMember({"contrast-merge", "concave-merge", "salient-cuts"}))
     ->capture_default_str();
   cmd.add_option("--eta", o.eta, "salient-cuts: segmentability threshold (a piece is cut when a contour scores above it)")
     ->check(Finite_range(0., 1.))
