@@ -14,6 +14,11 @@ $SEG info "$MESH"
 # (head, torso, arms, legs; the ears come out as parts of their own).
 $SEG segment "$MESH" --k 8 --labels "$OUT/human_k8.seg" --mesh "$OUT/human_k8.ply" \
   --png "$OUT/human_k8.png" --json "$OUT/human_k8.json"
+# Automatic segmentation: the number of parts chosen by the default method,
+# then the thesis's chapter 6 (salient cuts) with its hierarchy in the report.
+$SEG segment "$MESH" --k auto --labels "$OUT/human_auto.seg" --png "$OUT/human_auto.png" --json "$OUT/human_auto.json"
+$SEG -q segment "$MESH" --k auto --auto-method salient-cuts --labels "$OUT/human_salient.seg" \
+  --png "$OUT/human_salient.png" --json "$OUT/human_salient.json"
 # Distance fields from a face on the belly: the concave joints show up as
 # steps under the angular metric and not under the geodesic one; the
 # part-aware metric (the default) separates the limbs.

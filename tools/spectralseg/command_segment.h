@@ -49,12 +49,10 @@ struct Segment_options
 
 inline void add_segment_command(CLI::App& app, Segment_options& o)
 {
-  CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way)");
+  CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way), or into as many parts as it has (--k auto)");
   cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
   cmd->add_option("--k", o.k,
-                  "number of segments: a positive integer, or 'auto' to choose it (2 to --max-k): over-segment "
-                  "into --max-k clusters, then merge across the weakest boundaries while their mean concave "
-                  "angle is below --min-boundary-contrast times the mesh's mean (see --auto-method)")
+                  "number of segments: a positive integer, or 'auto' to let --auto-method choose it")
     ->required();
   cmd->add_option("--max-k", o.max_k, "largest k considered by --k auto")->capture_default_str()->check(Count(2, max_clusters));
   cmd->add_option("--min-boundary-contrast", o.min_boundary_contrast,
