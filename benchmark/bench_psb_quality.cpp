@@ -195,16 +195,21 @@ std::vector<double> part_aware(const Options& o, const SpectralSeg::Dual_graph& 
   return SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma, vo, 0.001, n)(g, exec);
 }
 
+// the part-aware weights with the ray caster of the options
+std::vector<double> part_aware_weights(const Options& o, const SpectralSeg::Dual_graph& g,
+                                       const SpectralSeg::Execution& exec)
+{
+#ifdef SPECTRALSEG_HAS_EMBREE
+  if(o.ray_caster == "embree")
+    return part_aware<SpectralSeg::Ray_casting::Embree_ray_caster>(o, g, exec);
+#endif
+  return part_aware<SpectralSeg::Ray_casting::AABB_ray_caster>(o, g, exec);
+}
+
 std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, std::size_t k)
 {
   const SpectralSeg::Execution exec(o.threads);
-  std::vector<double> w;
-#ifdef SPECTRALSEG_HAS_EMBREE
-  if(o.ray_caster == "embree")
-    w = part_aware<SpectralSeg::Ray_casting::Embree_ray_caster>(o, g, exec);
-  else
-#endif
-    w = part_aware<SpectralSeg::Ray_casting::AABB_ray_caster>(o, g, exec);
+  const std::vector<double> w = part_aware_weights(o, g, exec);
   const SpectralSeg::Weighted_dual_graph wg(g, w);
   SpectralSeg::K_way_options ko;
   ko.boundary_enhancement = o.graph_cut;
@@ -242,13 +247,7 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
 std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g)
 {
   const SpectralSeg::Execution exec(o.threads);
-  std::vector<double> w;
-#ifdef SPECTRALSEG_HAS_EMBREE
-  if(o.ray_caster == "embree")
-    w = part_aware<SpectralSeg::Ray_casting::Embree_ray_caster>(o, g, exec);
-  else
-#endif
-    w = part_aware<SpectralSeg::Ray_casting::AABB_ray_caster>(o, g, exec);
+  const std::vector<double> w = part_aware_weights(o, g, exec);
   const SpectralSeg::Weighted_dual_graph wg(g, w);
   SpectralSeg::Hybrid_options ho;
   ho.k_way.boundary_enhancement = o.graph_cut;
