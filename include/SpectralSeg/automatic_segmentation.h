@@ -18,11 +18,11 @@
 #include <SpectralSeg/Salient_cut/face_sequence.h>
 #include <SpectralSeg/Salient_cut/salient_cut_search.h>
 #include <SpectralSeg/Segmentability/segmentability.h>
+#include <SpectralSeg/internal/Stage_timer.h>
 #include <SpectralSeg/k_way_segmentation.h>
 #include <SpectralSeg/named_parameters.h>
 #include <SpectralSeg/segment_hybrid.h>
 
-#include <chrono>
 #include <queue>
 #include <string>
 #include <utility>
@@ -81,35 +81,6 @@ struct Automatic_segmentation_result
   std::vector<std::pair<std::string, double>> timings;
 };
 
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-// Accumulates the time spent in named stages.
-class Stage_totals
-{
-public:
-  explicit Stage_totals(std::vector<std::pair<std::string, double>>& t) : t_(t), clock_(std::chrono::steady_clock::now()) {}
-  void operator()(const std::string& stage)
-  {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - clock_).count();
-    clock_ = now;
-    for(auto& p : t_)
-      if(p.first == stage)
-      {
-        p.second += s;
-        return;
-      }
-    t_.emplace_back(stage, s);
-  }
-
-private:
-  std::vector<std::pair<std::string, double>>& t_;
-  std::chrono::steady_clock::time_point clock_;
-};
-
-} // namespace internal
-/// \endcond
 
 /// \ingroup PkgSpectralSegAutomatic
 /// \brief The weights of the graph on which faces are sequenced: geodesic
@@ -156,7 +127,7 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
 {
   Metrics::check_weights(graph, weights);
   Automatic_segmentation_result r;
-  internal::Stage_totals lap(r.timings);
+  internal::Stage_timer lap(r.timings, true);
   const std::size_t n = graph.number_of_faces();
   Part_hierarchy& h = r.hierarchy;
   h.number_of_faces = n;

@@ -1,6 +1,8 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Stage timings: (stage, seconds since the previous lap) appended to a list.
+// Stage timings: (stage, seconds since the previous lap) appended to a list,
+// or, accumulating, added to the entry of the same stage (stages that run
+// once per piece of a recursive algorithm).
 #ifndef SPECTRALSEG_INTERNAL_STAGE_TIMER_H
 #define SPECTRALSEG_INTERNAL_STAGE_TIMER_H
 
@@ -15,20 +17,29 @@ namespace internal {
 class Stage_timer
 {
 public:
-  explicit Stage_timer(std::vector<std::pair<std::string, double>>& timings)
-    : timings_(timings), clock_(std::chrono::steady_clock::now())
+  explicit Stage_timer(std::vector<std::pair<std::string, double>>& timings, bool accumulate = false)
+    : timings_(timings), clock_(std::chrono::steady_clock::now()), accumulate_(accumulate)
   {}
-  // appends (stage, seconds since construction or the previous call)
+  // records (stage, seconds since construction or the previous call)
   void operator()(const std::string& stage)
   {
     const auto now = std::chrono::steady_clock::now();
-    timings_.emplace_back(stage, std::chrono::duration<double>(now - clock_).count());
+    const double seconds = std::chrono::duration<double>(now - clock_).count();
     clock_ = now;
+    if(accumulate_)
+      for(auto& t : timings_)
+        if(t.first == stage)
+        {
+          t.second += seconds;
+          return;
+        }
+    timings_.emplace_back(stage, seconds);
   }
 
 private:
   std::vector<std::pair<std::string, double>>& timings_;
   std::chrono::steady_clock::time_point clock_;
+  bool accumulate_;
 };
 
 } // namespace internal
