@@ -102,15 +102,20 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
   {
     const Projection kind = p == 0 ? Projection::structure : Projection::geometry;
     Planar_projection proj = spectral_projection(piece, kind, curvatures, options.projection);
-    Contour_analysis a = analyse_contour(proj.points, piece.triangles(), options.contour, true);
+    // the MDS re-embedding is computed only when the plain contour fails
+    Contour_analysis a = analyse_contour(proj.points, piece.triangles(), options.contour, false);
     const Test plain = p == 0 ? Test::structure : Test::geometry;
     const Test normalized = p == 0 ? Test::structure_normalized : Test::geometry_normalized;
     r.scores[static_cast<std::size_t>(plain)] = a.score;
-    r.scores[static_cast<std::size_t>(normalized)] = a.normalized_score;
     r.projection = std::move(proj);
     r.contour = std::move(a);
     for(Test t : {plain, normalized})
     {
+      if(t == normalized)
+      {
+        add_normalized(r.contour, options.contour);
+        r.scores[static_cast<std::size_t>(t)] = r.contour.normalized_score;
+      }
       const double s = r.scores[static_cast<std::size_t>(t)];
       if(std::isfinite(s))
         r.score = std::max(r.score, s);
