@@ -319,7 +319,7 @@ TEST_CASE("graph_cut_boundaries moves labels to the nearest proxy along a strip"
     for(std::size_t f = 0; f < n; ++f)
       wrong += (embedding(static_cast<Eigen::Index>(f), 0) > 12.) != (other[f] == 1) ? 1 : 0;
     INFO("backend " << int(backend));
-    CHECK_NOFAIL(wrong == 0); // open question (issue 9 note): a few faces at the far end keep label 0
+    CHECK(wrong == 0);
   }
   for(std::size_t f = 0; f < n; ++f)
   {
@@ -327,10 +327,34 @@ TEST_CASE("graph_cut_boundaries moves labels to the nearest proxy along a strip"
     if(x < 8.)
       CHECK(labels[f] == 0);
     if(x > 12.)
-      CHECK_NOFAIL(labels[f] == 1); // open question: see above
+      CHECK(labels[f] == 1);
+  }
+  // leaving the decided faces out of the max-flow problems changes nothing
+  {
+    std::vector<int> all = start;
+    Refinement::Graph_cut_options o;
+    o.fix_decided_faces = false;
+    Refinement::graph_cut_boundaries(graph, embedding, proxies, all, o);
+    CHECK(all == labels);
   }
   std::vector<int> bad(n - 1, 0);
   CHECK_THROWS_AS(Refinement::graph_cut_boundaries(graph, embedding, proxies, bad), Invalid_input);
+  std::vector<int> out_of_range(n, 2);
+  CHECK_THROWS_AS(Refinement::graph_cut_boundaries(graph, embedding, proxies, out_of_range), Invalid_input);
+}
+
+TEST_CASE("graph_cut_boundaries: the decided faces left out, the same labels on a real mesh", "[graphcut]")
+{
+  const Star& s = star();
+  const K_way_result r = segment_k_way(s.weighted, 4);
+  Eigen::MatrixXd proxies = r.clusters.centroids;
+  std::vector<int> start = r.clusters.labels;
+  std::vector<int> fast = start, full = start;
+  Refinement::graph_cut_boundaries(s.weighted.graph(), r.embedding.coordinates, proxies, fast);
+  Refinement::Graph_cut_options o;
+  o.fix_decided_faces = false;
+  Refinement::graph_cut_boundaries(s.weighted.graph(), r.embedding.coordinates, proxies, full, o);
+  CHECK(fast == full);
 }
 
 TEST_CASE("hybrid segmentation finds the star's parts, deterministically, and checks its options", "[k_way][hybrid]")

@@ -8,9 +8,10 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Metrics/Angular_weight.h>
+#include <SpectralSeg/Refinement/internal/alpha_expansion.h>
 #include <SpectralSeg/exceptions.h>
 
-#include <CGAL/boost/graph/alpha_expansion_graphcut.h>
+#include <CGAL/boost/graph/alpha_expansion_graphcut.h> // the max-flow implementations
 #ifdef SPECTRALSEG_USE_MAXFLOW
 #include <CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h>
 #endif
@@ -52,6 +53,12 @@ struct Graph_cut_options
   /// longest one (the thesis): on real meshes the longest edge is often many
   /// times the typical one, which leaves the smoothness term without effect
   bool normalize_by_mean_edge = false;
+  /// leave out of the max-flow problems the faces whose data term alone
+  /// decides their label: a face whose current label is cheaper than every
+  /// other by more than the sum of its smoothness costs keeps it in every
+  /// expansion move, so fixing it changes no move's optimum. Off: every face
+  /// is a variable (slower on large meshes; for checking)
+  bool fix_decided_faces = true;
   /// max-flow implementation: MaxFlow when available (the fastest), else
   /// Boost on compressed sparse rows
 #ifdef SPECTRALSEG_USE_MAXFLOW
@@ -74,6 +81,13 @@ struct Graph_cut_options
 /// shared edge length and \f$a(e)\f$ its angular weight: short boundaries
 /// along concave creases are cheap.
 ///
+/// Expansion moves for every label are repeated until a whole sweep lowers
+/// the energy no more; a move is kept only when the energy of its labelling,
+/// evaluated exactly, is lower. Faces whose data term alone decides their
+/// label (`Graph_cut_options::fix_decided_faces`) are left out of the
+/// max-flow problems, which then only hold the faces near the boundaries.
+/// Deterministic.
+///
 /// \param graph the dual graph
 /// \param embedding one row per face
 /// \param proxies one row per segment
@@ -90,24 +104,7 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   if(k < 2)
     return;
 
-  // Data term, cost[label][face].
-  std::vector<std::vector<double>> cost(k, std::vector<double>(n));
-  const double scale = std::max(1e-300, (proxies.rowwise() - proxies.colwise().mean()).norm());
-  for(std::size_t f = 0; f < n; ++f)
-  {
-    std::vector<double> inv(k);
-    double total = 0.;
-    for(std::size_t c = 0; c < k; ++c)
-    {
-      const double d = std::max((embedding.row(Eigen::Index(f)) - proxies.row(Eigen::Index(c))).norm(), 1e-12 * scale);
-      inv[c] = 1. / d;
-      total += inv[c];
-    }
-    for(std::size_t c = 0; c < k; ++c)
-      cost[c][f] = -std::log(inv[c] / total);
-  }
-
-  // Smoothness term per dual edge.
+  // Smoothness term per dual edge, and its sum around each face.
   const Metrics::Angular_weight angular(options.convex_weight);
   double longest = graph.longest_edge_length() > 0 ? graph.longest_edge_length() : 1.;
   if(options.normalize_by_mean_edge && graph.number_of_edges() > 0)
@@ -118,37 +115,97 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
     longest = sum > 0 ? sum / double(graph.number_of_edges()) : longest;
   }
   const double log_norm = std::log(options.angular_mapping + 1.);
-  std::vector<std::pair<std::size_t, std::size_t>> edges;
   std::vector<double> edge_costs;
-  edges.reserve(graph.number_of_edges());
   edge_costs.reserve(graph.number_of_edges());
+  std::vector<double> smoothness_around(n, 0.);
   for(const Dual_graph::Edge& e : graph.edges())
   {
     const double mapped = log_norm > 0 ? std::log(options.angular_mapping * angular.weight(e) + 1.) / log_norm : 0.;
-    edges.emplace_back(e.face[0], e.face[1]);
-    edge_costs.push_back(options.smoothness * (e.length / longest) * std::max(0., 1. - mapped));
+    const double c = options.smoothness * (e.length / longest) * std::max(0., 1. - mapped);
+    edge_costs.push_back(c);
+    smoothness_around[e.face[0]] += c;
+    smoothness_around[e.face[1]] += c;
   }
 
-  std::vector<std::size_t> l(labels.begin(), labels.end());
+  // Data term of each face; the faces it does not decide become the
+  // variables of the problem.
+  const double scale = std::max(1e-300, (proxies.rowwise() - proxies.colwise().mean()).norm());
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> variable(n, none);
+  internal::Potts_problem problem;
+  problem.labels = k;
+  std::vector<std::size_t> face_of_variable;
+  std::vector<double> face_cost(k);
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    if(labels[f] < 0 || std::size_t(labels[f]) >= k)
+      throw Invalid_input("graph cut: a label is outside [0, number of proxies)");
+    double total = 0.;
+    for(std::size_t c = 0; c < k; ++c)
+    {
+      const double d = std::max((embedding.row(Eigen::Index(f)) - proxies.row(Eigen::Index(c))).norm(), 1e-12 * scale);
+      face_cost[c] = 1. / d;
+      total += face_cost[c];
+    }
+    for(std::size_t c = 0; c < k; ++c)
+      face_cost[c] = -std::log(face_cost[c] / total);
+    const std::size_t own = std::size_t(labels[f]);
+    bool decided = options.fix_decided_faces;
+    for(std::size_t c = 0; c < k && decided; ++c)
+      if(c != own && face_cost[c] - face_cost[own] <= smoothness_around[f])
+        decided = false;
+    if(decided)
+      continue;
+    variable[f] = face_of_variable.size();
+    face_of_variable.push_back(f);
+    problem.cost.insert(problem.cost.end(), face_cost.begin(), face_cost.end());
+  }
+  problem.vertices = face_of_variable.size();
+  if(problem.vertices == 0)
+    return;
+
+  // Edges between two variables stay; an edge to a fixed face costs its
+  // weight for every label but the fixed face's.
+  for(std::size_t i = 0; i < graph.edges().size(); ++i)
+  {
+    const Dual_graph::Edge& e = graph.edges()[i];
+    const std::size_t a = variable[e.face[0]], b = variable[e.face[1]];
+    if(a != none && b != none)
+    {
+      problem.edges.emplace_back(a, b);
+      problem.weights.push_back(edge_costs[i]);
+    }
+    else if(a != none || b != none)
+    {
+      const std::size_t v = a != none ? a : b;
+      const std::size_t fixed_label = std::size_t(labels[a != none ? e.face[1] : e.face[0]]);
+      for(std::size_t c = 0; c < k; ++c)
+        if(c != fixed_label)
+          problem.cost[v * k + c] += edge_costs[i];
+    }
+  }
+
+  std::vector<std::size_t> l(problem.vertices);
+  for(std::size_t v = 0; v < problem.vertices; ++v)
+    l[v] = std::size_t(labels[face_of_variable[v]]);
   switch(options.backend)
   {
   case Graph_cut_backend::boost_adjacency_list:
-    CGAL::alpha_expansion_graphcut(edges, edge_costs, cost, l, CGAL::Alpha_expansion_boost_adjacency_list_tag());
+    internal::alpha_expansion<CGAL::Alpha_expansion_boost_adjacency_list_impl>(problem, l);
     break;
   case Graph_cut_backend::maxflow:
 #ifdef SPECTRALSEG_USE_MAXFLOW
-    CGAL::alpha_expansion_graphcut(edges, edge_costs, cost, l, CGAL::Alpha_expansion_MaxFlow_tag());
+    internal::alpha_expansion<CGAL::Alpha_expansion_MaxFlow_impl>(problem, l);
     break;
 #else
     throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code from CGAL)");
 #endif
   case Graph_cut_backend::boost_compressed_sparse_row:
-    CGAL::alpha_expansion_graphcut(edges, edge_costs, cost, l,
-                                   CGAL::Alpha_expansion_boost_compressed_sparse_row_tag());
+    internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(problem, l);
     break;
   }
-  for(std::size_t f = 0; f < n; ++f)
-    labels[f] = static_cast<int>(l[f]);
+  for(std::size_t v = 0; v < problem.vertices; ++v)
+    labels[face_of_variable[v]] = static_cast<int>(l[v]);
 }
 
 } // namespace Refinement
