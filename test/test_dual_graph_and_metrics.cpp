@@ -308,6 +308,20 @@ TEST_CASE("farthest point sampling spreads samples along a strip", "[sampling]")
   CHECK(s.nearest_sample[1] == (s.faces[0] == 0 ? 0u : 1u));
   CHECK(s.distance[n / 2] == 0.);
   CHECK_THROWS_AS(Sampling::farthest_point_samples(wg, n + 1), Invalid_input);
+  // the kept distance rows are the samples' Dijkstra runs; the samples and
+  // the nearest distances are those of the run without them
+  Sampling::Farthest_point_options keep;
+  keep.start = 7;
+  keep.keep_distance_rows = true;
+  const Sampling::Farthest_point_samples kept = Sampling::farthest_point_samples(wg, 5, keep);
+  const Sampling::Farthest_point_samples plain = Sampling::farthest_point_samples(wg, 5, 7);
+  CHECK(kept.faces == plain.faces);
+  CHECK(kept.distance == plain.distance);
+  CHECK(kept.nearest_sample == plain.nearest_sample);
+  CHECK(plain.distance_rows.empty());
+  REQUIRE(kept.distance_rows.size() == 5);
+  for(std::size_t i = 0; i < 5; ++i)
+    CHECK(kept.distance_rows[i] == wg.distances(kept.faces[i]));
   // asking for every face returns every face once
   const Sampling::Farthest_point_samples all = Sampling::farthest_point_samples(wg, n);
   std::vector<Dual_graph::size_type> sorted = all.faces;

@@ -137,16 +137,34 @@ Spectral_embedding nystrom_spectral_embedding(const Weighted_dual_graph& graph, 
                         " dimensions on a mesh of " + std::to_string(n) + " faces");
   Spectral_embedding out;
   out.exact = false;
+  std::vector<std::vector<double>> rows; // the samples' distance rows, when the sampling kept them
   if(options.sampling == Sampling_method::gamma)
     out.samples = internal::gamma_samples(graph, l, options.gamma_candidates, kernel, options.seed, exec);
   else
   {
     std::mt19937 random(options.seed);
     const auto start = static_cast<Dual_graph::size_type>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random));
-    out.samples = Sampling::farthest_point_samples(graph, l, start, 10, exec).faces;
+    Sampling::Farthest_point_options sampling;
+    sampling.start = start;
+    sampling.keep_distance_rows = true; // the rows below, without running Dijkstra again
+    Sampling::Farthest_point_samples samples = Sampling::farthest_point_samples(graph, l, sampling, exec);
+    out.samples = samples.faces;
+    rows.swap(samples.distance_rows);
   }
 
-  internal::Row_matrix w = graph.distance_rows(out.samples, exec);
+  internal::Row_matrix w;
+  if(rows.empty())
+    w = graph.distance_rows(out.samples, exec);
+  else
+  {
+    w.resize(static_cast<Eigen::Index>(l), static_cast<Eigen::Index>(n));
+    for(std::size_t i = 0; i < l; ++i)
+    {
+      w.row(static_cast<Eigen::Index>(i)) =
+        Eigen::Map<const Eigen::RowVectorXd>(rows[i].data(), static_cast<Eigen::Index>(n));
+      std::vector<double>().swap(rows[i]);
+    }
+  }
   out.kernel_width = internal::distances_to_affinities(w, kernel, exec);
   out.gamma = nystrom_gamma(w, out.samples);
 

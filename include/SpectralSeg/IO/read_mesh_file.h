@@ -137,7 +137,10 @@ Mesh_file_report read_mesh_file(const std::string& path, CGAL::Surface_mesh<Poin
                         std::to_string(report.input_faces) + " faces repeat another face, leaving only " +
                         std::to_string(distinct) +
                         " distinct faces: the file is mostly copies of the same faces, not a surface");
-  report.non_manifold_edges = internal::count_non_manifold_edges(clean.triangles);
+  // an oriented manifold soup (the usual file) has no non-manifold edge and
+  // needs no orientation pass
+  const bool oriented_manifold = internal::is_oriented_manifold_soup(soup.points.size(), clean.triangles);
+  report.non_manifold_edges = oriented_manifold ? 0 : internal::count_non_manifold_edges(clean.triangles);
 
   std::vector<Point> points;
   points.reserve(soup.points.size());
@@ -145,7 +148,8 @@ Mesh_file_report read_mesh_file(const std::string& path, CGAL::Surface_mesh<Poin
     points.push_back(Point(p[0], p[1], p[2]));
   std::vector<std::array<std::size_t, 3>>& triangles = clean.triangles;
   const std::size_t points_before = points.size();
-  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, triangles);
+  if(!oriented_manifold)
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(points, triangles);
   report.split_vertices = points.size() - points_before;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   if(num_faces(mesh) != triangles.size())

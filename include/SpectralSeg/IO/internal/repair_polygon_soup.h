@@ -17,9 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <iterator>
-#include <map>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 namespace SpectralSeg {
@@ -28,20 +26,35 @@ namespace IO {
 namespace internal {
 
 // Merges the points with identical coordinates: returns, for each point of
-// the soup, its index among the merged points, which replace `points`.
+// the soup, its index among the merged points, which replace `points`. The
+// merged points keep the order of their first occurrence. O(n log n).
 inline std::vector<std::size_t> weld_identical_vertices(std::vector<std::array<double, 3>>& points)
 {
-  std::vector<std::size_t> weld(points.size());
-  std::map<std::array<double, 3>, std::size_t> first;
+  const std::size_t n = points.size();
+  std::vector<std::size_t> order(n);
+  for(std::size_t v = 0; v < n; ++v)
+    order[v] = v;
+  // equal coordinates end up together, the first occurrence first
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return points[a] < points[b] || (!(points[b] < points[a]) && a < b);
+  });
+  std::vector<std::size_t> first(n); // each point's first occurrence
+  for(std::size_t i = 0; i < n; ++i)
+    first[order[i]] = (i > 0 && !(points[order[i - 1]] < points[order[i]])) ? first[order[i - 1]] : order[i];
+  std::vector<std::size_t> weld(n);
   std::vector<std::array<double, 3>> unique;
-  for(std::size_t v = 0; v < points.size(); ++v)
+  for(std::size_t v = 0; v < n; ++v)
   {
-    auto it = first.emplace(points[v], unique.size());
-    if(it.second)
+    if(first[v] == v)
+    {
+      weld[v] = unique.size();
       unique.push_back(points[v]);
-    weld[v] = it.first->second;
+    }
+    else
+      weld[v] = weld[first[v]];
   }
-  points.swap(unique);
+  if(unique.size() != n)
+    points.swap(unique);
   return weld;
 }
 
@@ -93,33 +106,88 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
   out.duplicate_of.assign(faces, Mesh_file_report::no_face);
   out.triangles.reserve(faces);
   out.input_face_of_triangle.reserve(faces);
-  std::map<std::vector<std::size_t>, std::size_t> seen; // sorted vertices -> file face
-  std::vector<std::size_t> poly;
+
+  // Each face's welded polygon (consecutive repeats removed) and its sorted
+  // vertex set, the key that finds repeated faces.
+  std::vector<std::size_t> polygons, keys;
+  std::vector<std::size_t> begin(faces + 1, 0);
+  std::vector<std::uint8_t> valid(faces, 0);
+  polygons.reserve(soup.corners.size());
+  keys.reserve(soup.corners.size());
   for(std::size_t p = 0; p < faces; ++p)
   {
-    poly.clear();
+    const std::size_t start = polygons.size();
     for(std::size_t i = 0; i < soup.face_size(p); ++i)
     {
       const std::size_t w = weld[soup.face(p)[i]];
-      if(poly.empty() || poly.back() != w)
-        poly.push_back(w);
+      if(polygons.size() == start || polygons.back() != w)
+        polygons.push_back(w);
     }
-    while(poly.size() > 1 && poly.front() == poly.back())
-      poly.pop_back();
-    std::vector<std::size_t> key = poly;
-    std::sort(key.begin(), key.end());
-    if(poly.size() < 3 || std::adjacent_find(key.begin(), key.end()) != key.end())
+    while(polygons.size() > start + 1 && polygons[start] == polygons.back())
+      polygons.pop_back();
+    keys.insert(keys.end(), polygons.begin() + std::ptrdiff_t(start), polygons.end());
+    std::sort(keys.begin() + std::ptrdiff_t(start), keys.end());
+    begin[p + 1] = polygons.size();
+    valid[p] = (polygons.size() - start >= 3 &&
+                std::adjacent_find(keys.begin() + std::ptrdiff_t(start), keys.end()) == keys.end())
+                 ? 1
+                 : 0;
+  }
+
+  // Repeats: the valid faces sorted by key, ties by file order.
+  const auto key_less = [&](std::size_t a, std::size_t b) {
+    return std::lexicographical_compare(keys.begin() + std::ptrdiff_t(begin[a]),
+                                        keys.begin() + std::ptrdiff_t(begin[a + 1]),
+                                        keys.begin() + std::ptrdiff_t(begin[b]),
+                                        keys.begin() + std::ptrdiff_t(begin[b + 1]));
+  };
+  std::vector<std::size_t> order;
+  order.reserve(faces);
+  bool small_triangles = soup.points.size() < (std::size_t(1) << 32);
+  for(std::size_t p = 0; p < faces; ++p)
+    if(valid[p])
+    {
+      order.push_back(p);
+      small_triangles = small_triangles && begin[p + 1] - begin[p] == 3;
+    }
+  if(small_triangles) // the common case, sorted by value: several times faster
+  {
+    std::vector<std::array<std::uint32_t, 4>> sorted(order.size()); // key, then file face
+    for(std::size_t i = 0; i < order.size(); ++i)
+    {
+      const std::size_t* key = keys.data() + begin[order[i]];
+      sorted[i] = {std::uint32_t(key[0]), std::uint32_t(key[1]), std::uint32_t(key[2]), std::uint32_t(order[i])};
+    }
+    if(faces < (std::size_t(1) << 32))
+    {
+      std::sort(sorted.begin(), sorted.end());
+      for(std::size_t i = 0; i < sorted.size(); ++i)
+        order[i] = sorted[i][3];
+    }
+    else
+      std::stable_sort(order.begin(), order.end(), key_less);
+  }
+  else
+    std::stable_sort(order.begin(), order.end(), key_less);
+  for(std::size_t i = 1; i < order.size(); ++i)
+    if(!key_less(order[i - 1], order[i]))
+      out.duplicate_of[order[i]] =
+        out.duplicate_of[order[i - 1]] != Mesh_file_report::no_face ? out.duplicate_of[order[i - 1]] : order[i - 1];
+
+  std::vector<std::size_t> poly;
+  for(std::size_t p = 0; p < faces; ++p)
+  {
+    if(!valid[p])
     {
       ++report.invalid_faces;
       continue;
     }
-    auto it = seen.emplace(std::move(key), p);
-    if(!it.second)
+    if(out.duplicate_of[p] != Mesh_file_report::no_face)
     {
       ++report.duplicate_faces;
-      out.duplicate_of[p] = it.first->second;
       continue;
     }
+    poly.assign(polygons.begin() + std::ptrdiff_t(begin[p]), polygons.begin() + std::ptrdiff_t(begin[p + 1]));
     out.first_triangle[p] = out.triangles.size();
     if(poly.size() == 3)
     {
@@ -141,23 +209,107 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
   return out;
 }
 
-// Edges of the triangles shared by more than two of them.
-inline std::size_t count_non_manifold_edges(const std::vector<std::array<std::size_t, 3>>& triangles)
+// The undirected edges of the triangles, (smaller, larger) vertex, sorted.
+inline std::vector<std::uint64_t> sorted_edge_keys(const std::vector<std::array<std::size_t, 3>>& triangles,
+                                                   bool directed)
 {
-  std::unordered_map<std::uint64_t, unsigned> count;
-  count.reserve(3 * triangles.size() / 2);
+  std::vector<std::uint64_t> keys;
+  keys.reserve(3 * triangles.size());
   for(const auto& t : triangles)
     for(int i = 0; i < 3; ++i)
     {
       std::uint64_t a = t[std::size_t(i)], b = t[std::size_t((i + 1) % 3)];
-      if(a > b)
+      if(!directed && a > b)
         std::swap(a, b);
-      ++count[(a << 32) | b];
+      keys.push_back((a << 32) | b);
     }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+// Edges of the triangles shared by more than two of them.
+inline std::size_t count_non_manifold_edges(const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  const std::vector<std::uint64_t> keys = sorted_edge_keys(triangles, false);
   std::size_t n = 0;
-  for(const auto& c : count)
-    n += c.second > 2 ? 1 : 0;
+  for(std::size_t i = 0; i < keys.size();)
+  {
+    std::size_t j = i + 1;
+    while(j < keys.size() && keys[j] == keys[i])
+      ++j;
+    n += j - i > 2 ? 1 : 0;
+    i = j;
+  }
   return n;
+}
+
+// True when the triangles already form a consistently oriented 2-manifold
+// (with or without boundary): no directed edge twice, and the triangles
+// around each vertex one fan. Then CGAL's orient_polygon_soup() has nothing
+// to do. Linear after a sort; indices must fit 32 bits.
+inline bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  if(vertices >= (std::size_t(1) << 32))
+    return false;
+  const std::vector<std::uint64_t> halfedges = sorted_edge_keys(triangles, true);
+  if(std::adjacent_find(halfedges.begin(), halfedges.end()) != halfedges.end())
+    return false;
+  // The link of vertex v: an edge a -> b for each triangle (v, a, b). With
+  // unique directed edges every link vertex has at most one successor and
+  // one predecessor: the link is paths and cycles, and v is regular when it
+  // is exactly one of them.
+  std::vector<std::size_t> first(vertices + 1, 0);
+  for(const auto& t : triangles)
+    for(std::size_t v : t)
+      ++first[v + 1];
+  for(std::size_t v = 0; v < vertices; ++v)
+    first[v + 1] += first[v];
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> link(first[vertices]);
+  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+  for(const auto& t : triangles)
+    for(std::size_t i = 0; i < 3; ++i)
+      link[fill[t[i]]++] = {std::uint32_t(t[(i + 1) % 3]), std::uint32_t(t[(i + 2) % 3])};
+  for(std::size_t v = 0; v < vertices; ++v)
+  {
+    const auto lo = link.begin() + std::ptrdiff_t(first[v]), hi = link.begin() + std::ptrdiff_t(first[v + 1]);
+    const std::size_t degree = std::size_t(hi - lo);
+    if(degree < 2)
+      continue;
+    // a path starts at a link vertex without predecessor
+    std::size_t starts = 0;
+    std::uint32_t start = lo->first;
+    for(auto e = lo; e != hi; ++e)
+    {
+      bool has_predecessor = false;
+      for(auto g = lo; g != hi && !has_predecessor; ++g)
+        has_predecessor = g->second == e->first;
+      if(!has_predecessor)
+      {
+        ++starts;
+        start = e->first;
+      }
+    }
+    if(starts > 1)
+      return false;
+    // walk from the start: every link edge must be met
+    std::size_t walked = 0;
+    std::uint32_t at = start;
+    for(;;)
+    {
+      auto e = lo;
+      while(e != hi && e->first != at)
+        ++e;
+      if(e == hi)
+        break;
+      ++walked;
+      at = e->second;
+      if(at == start || walked > degree)
+        break;
+    }
+    if(walked != degree)
+      return false;
+  }
+  return true;
 }
 
 } // namespace internal

@@ -50,6 +50,14 @@ template <typename MaxFlow>
 std::vector<std::size_t> best_expansion(const Potts_problem& p, const std::vector<std::size_t>& l, std::size_t alpha)
 {
   typedef typename MaxFlow::Vertex_descriptor Vertex;
+  // A capacity no minimum cut can afford, kept finite: Boost's max-flow
+  // codes overflow on DBL_MAX.
+  double never = 1.;
+  for(double c : p.cost)
+    never += c;
+  for(double w : p.weights)
+    never += w;
+  never *= 2.;
   MaxFlow flow;
   flow.clear_graph();
   std::vector<Vertex> vertex(p.vertices);
@@ -57,8 +65,7 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const std::vecto
   {
     vertex[v] = flow.add_vertex();
     // vertices already labelled alpha stay so
-    const double keep =
-      l[v] == alpha ? (std::numeric_limits<double>::max)() : p.cost[v * p.labels + l[v]];
+    const double keep = l[v] == alpha ? never : p.cost[v * p.labels + l[v]];
     flow.add_tweight(vertex[v], p.cost[v * p.labels + alpha], keep);
   }
   for(std::size_t i = 0; i < p.edges.size(); ++i)
