@@ -99,15 +99,33 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
   for(std::size_t c = 0; c < kk; ++c)
     r.centroids.row(Eigen::Index(c)) = points.row(Eigen::Index(seeds[c]));
   r.labels.assign(n, -1);
+  // points and centroids stored point after point, distances summed in
+  // coordinate order: the same sums as Eigen's, several times faster
+  const std::size_t dims = static_cast<std::size_t>(points.cols());
+  std::vector<double> p(n * dims), centre(kk * dims);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < dims; ++j)
+      p[i * dims + j] = points(Eigen::Index(i), Eigen::Index(j));
+  std::vector<char> changed(n, 0);
   for(r.iterations = 0; r.iterations < max_iterations; ++r.iterations)
   {
-    std::vector<char> changed(n, 0);
+    for(std::size_t c = 0; c < kk; ++c)
+      for(std::size_t j = 0; j < dims; ++j)
+        centre[c * dims + j] = r.centroids(Eigen::Index(c), Eigen::Index(j));
     ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t i) {
       int best = 0;
       double best_d = std::numeric_limits<double>::infinity();
+      const double* x = p.data() + i * dims;
       for(std::size_t c = 0; c < kk; ++c)
       {
-        const double d = (points.row(Eigen::Index(i)) - r.centroids.row(Eigen::Index(c))).squaredNorm();
+        const double* y = centre.data() + c * dims;
+        double d = 0.;
+        if(dims > 0)
+        {
+          d = (x[0] - y[0]) * (x[0] - y[0]);
+          for(std::size_t j = 1; j < dims; ++j)
+            d += (x[j] - y[j]) * (x[j] - y[j]);
+        }
         if(d < best_d)
         {
           best_d = d;
