@@ -46,54 +46,82 @@ struct Potts_problem
 // of CGAL's Alpha_expansion_*_impl classes. A new max-flow object is built
 // for every move (CGAL 5.5's MaxFlow graph keeps the previous flow after
 // clear_graph(), which stops its driver after the first move).
+//
+// Only the candidates of the move are variables of its max-flow problem: a
+// vertex for which alpha costs more than its current label plus all its
+// edge weights (`around`) cannot take alpha in an optimal move (keeping its
+// label would be cheaper whatever its neighbours do), so it keeps its label
+// and enters its neighbours' terms as a constant. Returns false when no
+// vertex can take alpha.
 template <typename MaxFlow>
-std::vector<std::size_t> best_expansion(const Potts_problem& p, const std::vector<std::size_t>& l, std::size_t alpha)
+bool best_expansion(const Potts_problem& p, const std::vector<double>& around, std::vector<std::size_t>& l,
+                    std::size_t alpha)
 {
   typedef typename MaxFlow::Vertex_descriptor Vertex;
-  // A capacity no minimum cut can afford, kept finite: Boost's max-flow
-  // codes overflow on DBL_MAX.
-  double never = 1.;
-  for(double c : p.cost)
-    never += c;
-  for(double w : p.weights)
-    never += w;
-  never *= 2.;
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> candidate(p.vertices, none);
+  std::vector<std::size_t> vertex_of;
+  for(std::size_t v = 0; v < p.vertices; ++v)
+    if(l[v] != alpha && p.cost[v * p.labels + alpha] - p.cost[v * p.labels + l[v]] <= around[v])
+    {
+      candidate[v] = vertex_of.size();
+      vertex_of.push_back(v);
+    }
+  if(vertex_of.empty())
+    return false;
+  // t-weights: cost of taking alpha, cost of keeping the label
+  std::vector<double> take(vertex_of.size()), keep(vertex_of.size());
+  for(std::size_t i = 0; i < vertex_of.size(); ++i)
+  {
+    take[i] = p.cost[vertex_of[i] * p.labels + alpha];
+    keep[i] = p.cost[vertex_of[i] * p.labels + l[vertex_of[i]]];
+  }
+  for(std::size_t e = 0; e < p.edges.size(); ++e)
+  {
+    const std::size_t a = p.edges[e].first, b = p.edges[e].second;
+    if((candidate[a] == none) == (candidate[b] == none))
+      continue;
+    const std::size_t c = candidate[a] != none ? a : b, fixed = candidate[a] != none ? b : a;
+    if(l[fixed] != alpha)
+      take[candidate[c]] += p.weights[e];
+    if(l[fixed] != l[c])
+      keep[candidate[c]] += p.weights[e];
+  }
+
   MaxFlow flow;
   flow.clear_graph();
-  std::vector<Vertex> vertex(p.vertices);
-  for(std::size_t v = 0; v < p.vertices; ++v)
+  std::vector<Vertex> vertex(vertex_of.size());
+  for(std::size_t i = 0; i < vertex_of.size(); ++i)
   {
-    vertex[v] = flow.add_vertex();
-    // vertices already labelled alpha stay so
-    const double keep = l[v] == alpha ? never : p.cost[v * p.labels + l[v]];
-    flow.add_tweight(vertex[v], p.cost[v * p.labels + alpha], keep);
+    vertex[i] = flow.add_vertex();
+    flow.add_tweight(vertex[i], take[i], keep[i]);
   }
-  for(std::size_t i = 0; i < p.edges.size(); ++i)
+  for(std::size_t e = 0; e < p.edges.size(); ++e)
   {
-    const std::size_t a = p.edges[i].first, b = p.edges[i].second;
-    const double w = p.weights[i];
-    if(l[a] == l[b])
-    {
-      if(l[a] != alpha)
-        flow.add_edge(vertex[a], vertex[b], w, w);
-    }
+    const std::size_t a = candidate[p.edges[e].first], b = candidate[p.edges[e].second];
+    if(a == none || b == none)
+      continue;
+    const double w = p.weights[e];
+    if(l[vertex_of[a]] == l[vertex_of[b]])
+      flow.add_edge(vertex[a], vertex[b], w, w);
     else
     {
       Vertex between = flow.add_vertex();
-      const double wa = l[a] == alpha ? 0. : w;
-      const double wb = l[b] == alpha ? 0. : w;
-      flow.add_edge(between, vertex[a], wa, wa);
-      flow.add_edge(between, vertex[b], wb, wb);
+      flow.add_edge(between, vertex[a], w, w);
+      flow.add_edge(between, vertex[b], w, w);
       flow.add_tweight(between, 0., w);
     }
   }
   flow.init_vertices();
   flow.max_flow();
-  std::vector<std::size_t> next = l;
-  auto map = boost::make_iterator_property_map(next.begin(), boost::typed_identity_property_map<std::size_t>());
-  for(std::size_t v = 0; v < p.vertices; ++v)
-    flow.update(map, vertex, v, v, alpha);
-  return next;
+  std::vector<std::size_t> moved(vertex_of.size(), none);
+  auto map = boost::make_iterator_property_map(moved.begin(), boost::typed_identity_property_map<std::size_t>());
+  for(std::size_t i = 0; i < vertex_of.size(); ++i)
+    flow.update(map, vertex, i, i, alpha);
+  for(std::size_t i = 0; i < vertex_of.size(); ++i)
+    if(moved[i] == alpha)
+      l[vertex_of[i]] = alpha;
+  return true;
 }
 
 // Expansion moves over every label, sweep after sweep, each kept only when
@@ -106,13 +134,21 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l)
   if(p.vertices == 0 || p.labels < 2)
     return energy;
   const double tolerance = 1e-12;
+  std::vector<double> around(p.vertices, 0.);
+  for(std::size_t e = 0; e < p.edges.size(); ++e)
+  {
+    around[p.edges[e].first] += p.weights[e];
+    around[p.edges[e].second] += p.weights[e];
+  }
   bool improved = true;
   while(improved)
   {
     improved = false;
     for(std::size_t alpha = 0; alpha < p.labels; ++alpha)
     {
-      std::vector<std::size_t> next = best_expansion<MaxFlow>(p, l, alpha);
+      std::vector<std::size_t> next = l;
+      if(!best_expansion<MaxFlow>(p, around, next, alpha))
+        continue;
       const double e = p.energy(next);
       if(e < energy - tolerance * std::abs(energy))
       {
