@@ -381,3 +381,63 @@ TEST_CASE("write_colored_mesh writes one colour per face in PLY and OFF", "[io][
   std::filesystem::remove(ply);
   std::filesystem::remove(off);
 }
+
+TEST_CASE("make_dual_graph joins parts that touch, links specks, keeps large separate parts apart", "[dual_graph][contacts]")
+{
+  // three boxes: A and B touch along a face (their vertices coincide, but
+  // they are separate components), a tiny C floats far away, a large D
+  // floats far away
+  auto shifted = [](test_meshes::Soup s, double dx, double scale) {
+    for(auto& p : s.points)
+    {
+      for(auto& c : p)
+        c *= scale;
+      p[0] += dx;
+    }
+    return s;
+  };
+  test_meshes::Soup all;
+  auto append = [&all](const test_meshes::Soup& s) {
+    const std::size_t base = all.points.size();
+    all.points.insert(all.points.end(), s.points.begin(), s.points.end());
+    for(auto f : s.faces)
+    {
+      for(auto& v : f)
+        v += base;
+      all.faces.push_back(f);
+    }
+  };
+  const test_meshes::Soup box = test_meshes::welded(test_meshes::box(1., 1., 1., 4));
+  append(box);                    // A: [0,1]
+  append(shifted(box, 1., 1.));   // B: [1,2], touching A at x = 1
+  append(shifted(box, 4., 0.05)); // C: a speck, far away
+  append(shifted(box, 8., 1.));   // D: large, far away
+  const Mesh m = test_meshes::to_mesh<Mesh>(all);
+
+  const Dual_graph thesis = make_dual_graph(m, parameters::connect_touching_parts(false));
+  CHECK(thesis.number_of_components() == 4);
+  for(const auto& e : thesis.edges())
+    CHECK_FALSE(e.contact);
+
+  const Dual_graph g = make_dual_graph(m);
+  CHECK(g.number_of_components() == 2); // A+B+C, and D
+  const std::size_t per_box = box.faces.size();
+  const auto& component = g.component_of_faces();
+  CHECK(component[0] == component[per_box]);     // A and B
+  CHECK(component[0] == component[2 * per_box]); // the speck C joins the nearest part (B)
+  CHECK(component[0] != component[3 * per_box]); // D stays apart
+  std::size_t contacts = 0;
+  for(const auto& e : g.edges())
+    if(e.contact)
+    {
+      ++contacts;
+      CHECK(e.length > 0.);
+      CHECK(std::isfinite(e.geodesic_length));
+    }
+  CHECK(contacts > 1); // along the touching faces, and one for the speck
+  CHECK(g.number_of_edges() == thesis.number_of_edges() + contacts);
+
+  // no specks: C stays apart too
+  CHECK(make_dual_graph(m, parameters::speck_area_fraction(0.)).number_of_components() == 3);
+  CHECK_THROWS_AS(make_dual_graph(m, parameters::contact_distance(-1.)), Invalid_input);
+}

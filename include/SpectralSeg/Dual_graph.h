@@ -6,6 +6,8 @@
 #define SPECTRALSEG_DUAL_GRAPH_H
 
 #include <SpectralSeg/Mesh_geometry.h>
+#include <SpectralSeg/internal/contact_adjacencies.h>
+#include <SpectralSeg/named_parameters.h>
 
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 
@@ -56,6 +58,11 @@ public:
     /// whether the two faces form a concave (valley) fold, judged with
     /// outward normals; a flat pair is not concave
     bool concave;
+    /// a contact between parts that touch without sharing a mesh edge
+    /// (`vertex[0]` and `vertex[1]` are two vertices at the same position,
+    /// see `make_dual_graph()`); its `length` is nominal: the mean edge
+    /// length of the two faces
+    bool contact;
   };
 
   /// bundled property of a CSR arc: the dual edge it belongs to
@@ -77,6 +84,9 @@ public:
     size_type f1; ///< second face
     size_type v0; ///< first vertex of the shared edge, in the orientation of `f0`
     size_type v1; ///< second vertex of the shared edge
+    /// 0 for a shared mesh edge; for a contact (`v0` and `v1` two vertices
+    /// at the same position) the nominal length of the dual edge, positive
+    double contact_length = 0.;
   };
 
   Dual_graph() = default;
@@ -143,6 +153,8 @@ private:
       edge.face[1] = a.f1;
       edge.vertex[0] = a.v0;
       edge.vertex[1] = a.v1;
+      edge.contact = a.contact_length > 0.;
+      edge.length = a.contact_length;
       edges_.push_back(edge);
       sorted.emplace_back(a.f0, a.f1, e);
       sorted.emplace_back(a.f1, a.f0, e);
@@ -207,7 +219,8 @@ private:
       const Eigen::Vector3d& n0 = geometry_.normals[e.face[0]];
       const Eigen::Vector3d& n1 = geometry_.normals[e.face[1]];
       const Eigen::Vector3d m = 0.5 * (p + q);
-      e.length = (q - p).norm();
+      if(!e.contact)
+        e.length = (q - p).norm();
       e.geodesic_length = (c0 - m).norm() + (c1 - m).norm();
       const bool defined = n0.squaredNorm() > 0.5 && n1.squaredNorm() > 0.5;
       const double cosine = std::max(-1., std::min(1., n0.dot(n1)));
@@ -269,11 +282,40 @@ private:
 /// \param tm the mesh
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
+/// Parts that touch or nearly touch without sharing a mesh edge are joined:
+/// when two vertices at most `contact_distance` apart belong to faces of
+/// different connected components (what splitting non-manifold edges or
+/// vertices, an unwelded export or a model assembled from separate pieces
+/// leaves), the nearest two of their incident faces get a contact edge
+/// (`Dual_graph::Edge::contact`), whose geometry is that of a shared edge of
+/// nominal length at the vertices' midpoint. Specks still apart (parts with
+/// less than `speck_area_fraction` of the area) are then linked, smallest
+/// first, to the nearest other part by one contact between their nearest
+/// vertices, so that they join the part they lie against instead of taking
+/// a segment each. Larger parts that do not touch stay apart: each is at
+/// least one segment. A mesh of one connected component gets no contact. `connect_touching_parts(false)` keeps only the mesh
+/// edges, as in the thesis.
+///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map, vertex_index_map, face_index_map}
 ///     \cgalParamDescription{the vertex positions and the numbering of vertices and faces, as for `extract_mesh_geometry()`}
 ///     \cgalParamType{property maps as for `extract_mesh_geometry()`}
 ///     \cgalParamDefault{the mesh's internal maps}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{connect_touching_parts}
+///     \cgalParamDescription{whether faces of different connected components that touch at a vertex position are joined by contact edges}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{contact_distance}
+///     \cgalParamDescription{how far apart two vertices of different components may be to join them, as a fraction of the diagonal of the mesh's bounding box}
+///     \cgalParamType{`double`, finite, at least 0}
+///     \cgalParamDefault{0.005}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{speck_area_fraction}
+///     \cgalParamDescription{parts with less than this fraction of the mesh's area that touch nothing are linked to the nearest other part (0: none)}
+///     \cgalParamType{`double`, in [0, 1]}
+///     \cgalParamDefault{0.01}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -305,6 +347,28 @@ Dual_graph make_dual_graph(const TriangleMesh& tm,
                            static_cast<Dual_graph::size_type>(get(fim, f1)),
                            static_cast<Dual_graph::size_type>(get(vim, source(h, tm))),
                            static_cast<Dual_graph::size_type>(get(vim, target(h, tm)))});
+  }
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double gap_fraction = choose_parameter(get_parameter(np, internal_np::contact_distance), 0.005);
+  if(!(gap_fraction >= 0.) || !std::isfinite(gap_fraction))
+    throw Invalid_input("make_dual_graph: contact_distance must be finite and not negative");
+  if(choose_parameter(get_parameter(np, internal_np::connect_touching_parts), true))
+  {
+    const double gap = gap_fraction * geometry.bbox_diagonal;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    pairs.reserve(adjacencies.size());
+    for(const Dual_graph::Adjacency& a : adjacencies)
+      pairs.emplace_back(a.f0, a.f1);
+    const double speck = choose_parameter(get_parameter(np, internal_np::speck_area_fraction), 0.01);
+    if(!(speck >= 0.) || !(speck <= 1.))
+      throw Invalid_input("make_dual_graph: speck_area_fraction must be in [0, 1]");
+    for(const internal::Contact& c : internal::contact_adjacencies(geometry, pairs, gap, speck))
+    {
+      Dual_graph::Adjacency a{c.f0, c.f1, c.v0, c.v1};
+      a.contact_length = c.length > 0. ? c.length : 1e-300;
+      adjacencies.push_back(a);
+    }
   }
   return Dual_graph(std::move(geometry), adjacencies, border);
 }

@@ -39,7 +39,10 @@ namespace internal_np {
   P(segmentability_threshold_t, segmentability_threshold) \
   P(structure_only_t, structure_only) \
   P(min_part_area_fraction_t, min_part_area_fraction) \
-  P(part_hierarchy_t, part_hierarchy)
+  P(part_hierarchy_t, part_hierarchy) \
+  P(connect_touching_parts_t, connect_touching_parts) \
+  P(contact_distance_t, contact_distance) \
+  P(speck_area_fraction_t, speck_area_fraction)
 
 #define SPECTRALSEG_DECLARE_TAG(X, Y) enum X { Y };
 SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_DECLARE_TAG)

@@ -236,6 +236,15 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   for(const auto& t : r.timings)
     timings.push_back(t);
   t0 = clock::now();
+  if(k > 0 && r.number_of_segments != k)
+  {
+    const std::size_t parts = m.graph.number_of_components();
+    out.message("warning: " + std::to_string(r.number_of_segments) + " segments instead of " + std::to_string(k) +
+                (parts > k ? ": the mesh is " + std::to_string(parts) +
+                               " separate parts that do not touch (each larger than 1% of the area), and a segment "
+                               "never spans two of them"
+                           : ""));
+  }
 
   report["kernel"] = o.kernel;
   report["embedding"] = r.embedding.exact ? "exact" : "nystrom";

@@ -1,0 +1,233 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Contacts between the parts of a mesh that touch without sharing a mesh
+// edge: vertices at the same position in different connected components
+// (what splitting non-manifold edges and vertices, or an unwelded export,
+// leaves behind).
+#ifndef SPECTRALSEG_INTERNAL_CONTACT_ADJACENCIES_H
+#define SPECTRALSEG_INTERNAL_CONTACT_ADJACENCIES_H
+
+#include <SpectralSeg/Mesh_geometry.h>
+#include <SpectralSeg/internal/Point_neighbours.h>
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+namespace internal {
+
+// One contact: faces f0 and f1 touch at vertices v0 and v1 (same position).
+struct Contact
+{
+  std::uint32_t f0, f1, v0, v1;
+  double length; // nominal length: the mean edge length of the two faces
+};
+
+// For every two vertices at most `gap` apart (0: at the same position)
+// whose faces lie in different connected components (under `adjacent`,
+// pairs of faces sharing a mesh edge), one contact between the nearest two
+// of their incident faces (centroid distance, ties by face index); one
+// contact per pair of faces. Then the specks, parts with less than
+// `speck_area_fraction` of the area, are linked to the nearest other part,
+// smallest first, until none is left apart. Deterministic.
+inline std::vector<Contact> contact_adjacencies(const Mesh_geometry& geo,
+                                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& adjacent,
+                                                double gap, double speck_area_fraction)
+{
+  const std::size_t nf = geo.number_of_faces();
+  const std::size_t nv = geo.points.size();
+  std::vector<Contact> out;
+  if(nf < 2)
+    return out;
+
+  // connected components of the faces
+  std::vector<std::size_t> rank(nf, 0), parent(nf);
+  boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
+  for(std::size_t f = 0; f < nf; ++f)
+    sets.make_set(f);
+  for(const auto& a : adjacent)
+    sets.union_set(a.first, a.second);
+  std::vector<std::size_t> component(nf);
+  bool several = false;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    component[f] = sets.find_set(f);
+    several = several || component[f] != component[0];
+  }
+  if(!several)
+    return out;
+
+  // faces around each vertex
+  std::vector<std::size_t> first(nv + 1, 0);
+  for(const auto& t : geo.triangles)
+    for(std::uint32_t v : t)
+      ++first[v + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    first[v + 1] += first[v];
+  std::vector<std::uint32_t> around(first[nv]);
+  {
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(std::size_t f = 0; f < nf; ++f)
+      for(std::uint32_t v : geo.triangles[f])
+        around[fill[v]++] = static_cast<std::uint32_t>(f);
+  }
+  const auto mean_edge = [&](std::uint32_t f) {
+    const auto& t = geo.triangles[f];
+    return ((geo.points[t[0]] - geo.points[t[1]]).norm() + (geo.points[t[1]] - geo.points[t[2]]).norm() +
+            (geo.points[t[2]] - geo.points[t[0]]).norm()) /
+           3.;
+  };
+
+  // a contact between the nearest two faces of the fans of va and vb
+  const auto contact = [&](std::uint32_t va, std::uint32_t vb) {
+    double best = std::numeric_limits<double>::infinity();
+    Contact c{0, 0, va, vb, 0.};
+    for(std::size_t x = first[va]; x < first[va + 1]; ++x)
+      for(std::size_t y = first[vb]; y < first[vb + 1]; ++y)
+      {
+        const double d = (geo.centroids[around[x]] - geo.centroids[around[y]]).squaredNorm();
+        if(d < best)
+        {
+          best = d;
+          c.f0 = around[x];
+          c.f1 = around[y];
+        }
+      }
+    c.length = 0.5 * (mean_edge(c.f0) + mean_edge(c.f1));
+    return c;
+  };
+
+  // For each vertex with faces, the vertices of other components within
+  // `gap` (at the same position when `gap` is 0): among its nearest
+  // `neighbours` vertices.
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<std::uint32_t> vertex_of;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(first[v + 1] > first[v])
+    {
+      positions.push_back(geo.points[v]);
+      vertex_of.push_back(static_cast<std::uint32_t>(v));
+    }
+  const Point_neighbours tree(positions);
+  const std::size_t neighbours = 12;
+  for(std::size_t i = 0; i < positions.size(); ++i)
+  {
+    const std::uint32_t va = vertex_of[i];
+    for(const auto& q : tree.nearest(positions[i], neighbours))
+    {
+      const std::uint32_t vb = vertex_of[q.first];
+      if(q.second > gap * gap)
+        break;
+      if(vb <= va || component[around[first[va]]] == component[around[first[vb]]])
+        continue;
+      out.push_back(contact(va, vb));
+    }
+  }
+  // Specks (parts under `speck_area_fraction` of the total area) still apart
+  // are linked to the nearest other part by a contact between their nearest
+  // vertices, in rounds (Boruvka): in each round every speck finds its
+  // nearest other part among its vertices' nearest neighbours, and the links
+  // are added smallest speck first.
+  for(const Contact& c : out)
+    sets.union_set(c.f0, c.f1);
+  const auto vertex_less = [](double d, std::uint32_t a, std::uint32_t b, double e, std::uint32_t c, std::uint32_t x) {
+    return std::make_tuple(d, a, b) < std::make_tuple(e, c, x);
+  };
+  for(;;)
+  {
+    std::vector<double> area(nf, 0.);
+    std::vector<std::size_t> root(nf);
+    std::size_t parts = 0;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      root[f] = sets.find_set(f);
+      area[root[f]] += geo.areas[f];
+      parts += root[f] == f ? 1 : 0;
+    }
+    double total = 0.;
+    for(std::size_t f = 0; f < nf; ++f)
+      total += geo.areas[f];
+    std::size_t specks = 0;
+    for(std::size_t f = 0; f < nf; ++f)
+      specks += root[f] == f && area[f] < speck_area_fraction * total ? 1 : 0;
+    if(parts < 2 || specks == 0)
+      break;
+    const auto part_of = [&](std::uint32_t v) { return root[around[first[v]]]; };
+    struct Link { double d = std::numeric_limits<double>::infinity(); std::uint32_t a = 0, b = 0; };
+    std::vector<Link> link(nf);
+    for(std::size_t i = 0; i < positions.size(); ++i)
+    {
+      const std::size_t p = part_of(vertex_of[i]);
+      for(const auto& q : tree.nearest(positions[i], neighbours))
+      {
+        Link& l = link[p];
+        if(part_of(vertex_of[q.first]) != p && vertex_less(q.second, vertex_of[i], vertex_of[q.first], l.d, l.a, l.b))
+          l = Link{q.second, vertex_of[i], vertex_of[q.first]};
+      }
+    }
+    std::vector<std::size_t> order; // the specks
+    for(std::size_t f = 0; f < nf; ++f)
+      if(root[f] == f && area[f] < speck_area_fraction * total)
+        order.push_back(f);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return std::make_pair(area[a], a) < std::make_pair(area[b], b); });
+    bool linked = false;
+    for(std::size_t p : order)
+    {
+      const Link& l = link[p];
+      if(!std::isfinite(l.d) || sets.find_set(around[first[l.a]]) == sets.find_set(around[first[l.b]]))
+        continue;
+      out.push_back(contact(l.a, l.b));
+      sets.union_set(out.back().f0, out.back().f1);
+      linked = true;
+    }
+    if(linked)
+      continue;
+    // every speck's nearest vertices are its own: the smallest speck is
+    // linked exactly, through a search tree of the other parts' vertices
+    const std::size_t p = order.front();
+    std::vector<Eigen::Vector3d> others;
+    std::vector<std::uint32_t> other_vertex;
+    for(std::size_t i = 0; i < positions.size(); ++i)
+      if(part_of(vertex_of[i]) != p)
+      {
+        others.push_back(positions[i]);
+        other_vertex.push_back(vertex_of[i]);
+      }
+    const Point_neighbours other_tree(others);
+    Link best;
+    for(std::size_t i = 0; i < positions.size(); ++i)
+      if(part_of(vertex_of[i]) == p)
+        for(const auto& q : other_tree.nearest(positions[i], 1))
+          if(vertex_less(q.second, vertex_of[i], other_vertex[q.first], best.d, best.a, best.b))
+            best = Link{q.second, vertex_of[i], other_vertex[q.first]};
+    out.push_back(contact(best.a, best.b));
+    sets.union_set(out.back().f0, out.back().f1);
+  }
+
+  // one contact per pair of faces
+  std::sort(out.begin(), out.end(), [](const Contact& a, const Contact& b) {
+    return std::make_tuple(std::min(a.f0, a.f1), std::max(a.f0, a.f1), a.v0, a.v1) <
+           std::make_tuple(std::min(b.f0, b.f1), std::max(b.f0, b.f1), b.v0, b.v1);
+  });
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const Contact& a, const Contact& b) {
+                          return std::min(a.f0, a.f1) == std::min(b.f0, b.f1) &&
+                                 std::max(a.f0, a.f1) == std::max(b.f0, b.f1);
+                        }),
+            out.end());
+  return out;
+}
+
+} // namespace internal
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_INTERNAL_CONTACT_ADJACENCIES_H
