@@ -559,13 +559,6 @@ inline int run_batch(const Batch_options& o, const Progress_printer& out)
   plan.options_hash = hash_text(plan.options);
   plan.parent = ::getpid();
 
-  const Batch_list list = list_batch_meshes(o.inputs, o.lists, o.recursive, o.root, o.out);
-  if(list.meshes.empty())
-    throw SpectralSeg::Invalid_input("batch: no mesh file found in the inputs given");
-  std::string names;
-  for(const Batch_mesh& m : list.meshes)
-    names += m.name + "\n";
-
   std::error_code ec;
   fs::create_directories(o.out, ec);
   if(ec)
@@ -579,6 +572,13 @@ inline int run_batch(const Batch_options& o, const Progress_printer& out)
     for(const char* f : {"summary.csv", "summary.jsonl", "batch.json"})
       fs::remove(fs::path(o.out) / f, ec);
   SpectralSeg::IO::check_writable(stem + ".csv");
+
+  const Batch_list list = list_batch_meshes(o.inputs, o.lists, o.recursive, o.root, o.out);
+  if(list.meshes.empty())
+    throw SpectralSeg::Invalid_input("batch: no mesh file found in the inputs given");
+  std::string names;
+  for(const Batch_mesh& m : list.meshes)
+    names += m.name + "\n";
 
   std::vector<Batch_mesh> meshes;
   for(std::size_t i = 0; i < list.meshes.size(); ++i)
