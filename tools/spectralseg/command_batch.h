@@ -187,14 +187,18 @@ inline Mesh_outputs outputs_of(const Batch_plan& plan, const Batch_mesh& mesh)
 
 // Removes the outputs of a mesh that a run may have left (also temporary
 // files of an interrupted write); the JSON report, the mark of a finished
-// mesh, goes first.
+// mesh, goes first. A coloured mesh is removed only in the format asked for
+// (NAME.off could be a mesh file when the output folder holds the inputs).
 inline void remove_mesh_outputs(const Batch_plan& plan, const Batch_mesh& mesh)
 {
   const fs::path base = fs::path(plan.out) / mesh.name;
   std::error_code ec;
-  const std::vector<std::string> suffixes{"json", "seg", "png", "ply", "off"};
+  std::vector<std::string> suffixes{"json", "seg", "png"};
+  if(!plan.colored_mesh.empty())
+    suffixes.push_back(plan.colored_mesh);
   for(const std::string& s : suffixes)
     fs::remove(base.string() + "." + s, ec);
+  suffixes = {"json", "seg", "png", "ply", "off"};
   const std::string leaf = base.filename().string();
   fs::directory_iterator it(base.parent_path(), ec), end;
   for(; !ec && it != end; it.increment(ec))
