@@ -47,10 +47,10 @@ struct Segment_options
   Salient_cut_options salient;
 };
 
-inline void add_segment_command(CLI::App& app, Segment_options& o)
+// The options of the method, all but the input and the outputs: shared by
+// `segment` and `batch`.
+inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
 {
-  CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way), or into as many parts as it has (--k auto)");
-  cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
   cmd->add_option("--k", o.k,
                   "number of segments: a positive integer, or 'auto' to let --auto-method choose it")
     ->required();
@@ -79,6 +79,13 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
                   "K-means makes k + N clusters, then the segments with the weakest (least concave) boundaries "
                   "are merged until k are left (0: the thesis's method)")->capture_default_str()->check(Count(0, max_clusters));
   add_salient_cut_options(*cmd, o.salient);
+}
+
+inline void add_segment_command(CLI::App& app, Segment_options& o)
+{
+  CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way), or into as many parts as it has (--k auto)");
+  cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
+  add_segment_method_options(cmd, o);
   cmd->add_option("--labels", o.labels, "output: one segment label per face of the file, in file order")->required();
   cmd->add_option("--mesh", o.out_mesh, "output: the mesh with one colour per segment (.ply or .off)");
   cmd->add_option("--png", o.png, "output: picture of the segments");
@@ -146,6 +153,27 @@ int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const 
   return 0;
 }
 
+// The value of --k: a number of segments, or 0 for 'auto'.
+// \throws Usage_error if it is neither
+inline std::size_t parse_k(const std::string& text)
+{
+  if(text == "auto")
+    return 0;
+  std::size_t used = 0;
+  long long v = 0;
+  try
+  {
+    v = std::stoll(text, &used);
+  }
+  catch(const std::exception&)
+  {
+    used = 0;
+  }
+  if(used != text.size() || v < 1 || v > static_cast<long long>(max_clusters))
+    throw Usage_error("--k must be a positive integer up to " + std::to_string(max_clusters) + " or 'auto' (got '" + text + "')");
+  return static_cast<std::size_t>(v);
+}
+
 inline int run_segment(const Segment_options& o, Progress_printer& out)
 {
   using clock = std::chrono::steady_clock;
@@ -158,23 +186,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     t0 = now;
   };
 
-  std::size_t k = 0; // 0: automatic
-  if(o.k != "auto")
-  {
-    std::size_t used = 0;
-    long long v = 0;
-    try
-    {
-      v = std::stoll(o.k, &used);
-    }
-    catch(const std::exception&)
-    {
-      used = 0;
-    }
-    if(used != o.k.size() || v < 1 || v > static_cast<long long>(max_clusters))
-      throw Usage_error("--k must be a positive integer up to " + std::to_string(max_clusters) + " or 'auto' (got '" + o.k + "')");
-    k = static_cast<std::size_t>(v);
-  }
+  const std::size_t k = parse_k(o.k);
   check_outputs_writable({o.labels, o.out_mesh, o.png, o.json});
 
   const Loaded_mesh m(o.mesh, out);

@@ -1,6 +1,7 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 // spectralseg: the command-line tool of SpectralSeg.
+#include "command_batch.h"
 #include "command_distance.h"
 #include "command_eval.h"
 #include "command_info.h"
@@ -66,6 +67,9 @@ int main(int argc, char** argv)
   add_eval_command(app, eval);
   Render_command_options render;
   add_render_command(app, render);
+  Batch_options batch;
+  Batch_merge_options batch_merge;
+  add_batch_commands(app, batch, batch_merge);
 
   try
   {
@@ -95,6 +99,10 @@ int main(int argc, char** argv)
       return finish(run_eval(eval, out));
     if(app.got_subcommand("render"))
       return finish(run_render(render, out));
+    if(app.got_subcommand("batch"))
+      return finish(run_batch(batch, out));
+    if(app.got_subcommand("batch-merge"))
+      return finish(run_batch_merge(batch_merge, out));
   }
   catch(const Usage_error& e)
   {
