@@ -26,7 +26,8 @@
 
 /// \example k_way_segmentation.cpp
 /// k-way segmentation of a `CGAL::Surface_mesh` with the defaults, segment
-/// areas, a coloured PLY, and the spectral embedding clustered by hand.
+/// areas, a coloured PLY (`SpectralSeg::IO::write_segmented_mesh()`), and the
+/// spectral embedding clustered by hand.
 
 /// \example automatic_segmentation.cpp
 /// Automatic segmentation of a `CGAL::Polyhedron_3` by recursive salient

@@ -29,7 +29,8 @@
 /// callback; every exception the library throws derives from `Error`.
 ///
 /// Headers: `<SpectralSeg/Mesh_geometry.h>`, `<SpectralSeg/Dual_graph.h>`,
-/// `<SpectralSeg/Execution.h>`, `<SpectralSeg/exceptions.h>`.
+/// `<SpectralSeg/Execution.h>`, `<SpectralSeg/exceptions.h>`, `<SpectralSeg/version.h>`
+/// (the version macros).
 
 /// \defgroup PkgSpectralSegMetrics Dual-edge metrics
 /// \ingroup PkgSpectralSegRef
@@ -70,7 +71,7 @@
 /// Headers: `<SpectralSeg/face_distances.h>`,
 /// `<SpectralSeg/Weighted_dual_graph.h>`.
 
-/// \defgroup PkgSpectralSegIO Reading meshes, writing per-face values
+/// \defgroup PkgSpectralSegIO Reading meshes, writing per-face values and segmented meshes
 /// \ingroup PkgSpectralSegRef
 /// \brief Reading OFF, OBJ, PLY and STL files with checks and repairs,
 /// writing per-face results in the order of the faces of the file, and
@@ -80,10 +81,18 @@
 /// Benchmark) are read and written by `Evaluation::read_labels()` and
 /// `Evaluation::write_labels()` (\ref PkgSpectralSegEvaluation).
 ///
+/// `write_segmented_mesh()` and `write_segment_parts()` write segmented
+/// meshes that other programs show in colour (PLY with coloured vertices
+/// and the labels, OBJ with one material per segment, one file per part;
+/// \ref ss_outputs).
+///
 /// Headers: `<SpectralSeg/IO/read_mesh_file.h>`,
 /// `<SpectralSeg/IO/Mesh_file_report.h>`,
 /// `<SpectralSeg/IO/write_face_values.h>`,
-/// `<SpectralSeg/IO/write_colored_mesh.h>`.
+/// `<SpectralSeg/IO/write_colored_mesh.h>`,
+/// `<SpectralSeg/IO/write_segmented_mesh.h>`,
+/// `<SpectralSeg/IO/write_segment_parts.h>`,
+/// `<SpectralSeg/IO/Mesh_output_format.h>`.
 
 /// \defgroup PkgSpectralSegNamedParameters Named parameters
 /// \ingroup PkgSpectralSegRef

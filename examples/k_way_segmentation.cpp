@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Segments a CGAL::Surface_mesh into k parts with the part-aware metric,
-// prints the area of each segment, and writes the mesh with one colour per
-// segment. Then asks for the spectral embedding alone, as a user who runs
+// prints the area of each segment, and writes the mesh in the colours of its
+// segments (a PLY file that Blender, MeshLab and Open3D show in colour, with
+// the labels as a face property). Then asks for the spectral embedding alone, as a user who runs
 // their own clustering would, and scores the two results against each
 // other with the Rand index. Last, on a weighted dual graph built once: the
 // thesis's method against the default (which over-segments and merges), a
@@ -11,7 +12,7 @@
 //
 // usage: k_way_segmentation [mesh.off] [k=6] [out.ply]
 #include <SpectralSeg/Clustering/Kmeans.h>
-#include <SpectralSeg/IO/write_colored_mesh.h>
+#include <SpectralSeg/IO/write_segmented_mesh.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Refinement/merge_segments.h>
 #include <SpectralSeg/evaluation.h>
@@ -55,12 +56,11 @@ int main(int argc, char** argv)
     std::cout << ' ' << a;
   std::cout << "\n";
 
-  const SpectralSeg::Mesh_geometry geometry = SpectralSeg::extract_mesh_geometry(mesh);
+  SpectralSeg::IO::write_segmented_mesh(out, mesh, segment); // .ply, .obj (+ .mtl) or .off
+  std::cout << "coloured mesh: " << out << "\n";
   std::vector<int> labels;
   for(face_descriptor f : faces(mesh))
     labels.push_back(static_cast<int>(get(segment, f)));
-  SpectralSeg::IO::write_colored_mesh(out, geometry, SpectralSeg::Rendering::label_colors(labels));
-  std::cout << "coloured mesh: " << out << "\n";
 
   // The embedding alone (rows follow the face index), clustered by hand.
   const SpectralSeg::Embedding::Spectral_embedding embedding = SpectralSeg::spectral_embedding(mesh, k);

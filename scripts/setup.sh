@@ -12,6 +12,7 @@ PACKAGES=(
   catch2 libcli11-dev nlohmann-json3-dev libpng-dev
   doxygen
   python3 gnuplot-nox
+  python3-open3d   # the test mesh_outputs_open3d reads the PLY/OBJ outputs back (system python3)
 )
 
 missing=()

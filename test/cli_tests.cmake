@@ -30,6 +30,49 @@ function(run_cli expect_rc pattern)
   endif()
 endfunction()
 
+# like run_cli, and the output (stdout and stderr) must not match `absent`
+function(run_cli_without expect_rc absent)
+  execute_process(COMMAND ${SPECTRALSEG} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+                  TIMEOUT 300)
+  math(EXPR n "${checks} + 1")
+  set(checks ${n} PARENT_SCOPE)
+  if(NOT rc EQUAL expect_rc OR "${out}${err}" MATCHES "${absent}")
+    message("FAIL: spectralseg ${ARGN}\n  expected rc ${expect_rc} and no /${absent}/\n  got rc ${rc}\n  stdout: ${out}\n  stderr: ${err}")
+    math(EXPR f "${failures} + 1")
+    set(failures ${f} PARENT_SCOPE)
+  else()
+    message("ok: spectralseg ${ARGN}")
+  endif()
+endfunction()
+
+# a run whose standard output must be one JSON object with `key` equal to
+# `value` (standard error is free)
+function(run_cli_json key value)
+  execute_process(COMMAND ${SPECTRALSEG} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+                  TIMEOUT 300)
+  math(EXPR n "${checks} + 1")
+  set(checks ${n} PARENT_SCOPE)
+  string(JSON got ERROR_VARIABLE json_error GET "${out}" ${key}) # key: a list, for nested members
+  if(NOT rc EQUAL 0 OR json_error OR NOT got STREQUAL value OR NOT out MATCHES "^{.*}\n$")
+    message("FAIL: spectralseg ${ARGN}\n  expected JSON alone on stdout with ${key} = ${value}\n  got rc ${rc} (${json_error})\n  stdout: ${out}\n  stderr: ${err}")
+    math(EXPR f "${failures} + 1")
+    set(failures ${f} PARENT_SCOPE)
+  else()
+    message("ok: spectralseg ${ARGN}")
+  endif()
+endfunction()
+
+# a check that a file was not written
+function(expect_absent what)
+  foreach(f ${ARGN})
+    if(EXISTS ${WORK}/${f})
+      message("FAIL: ${what}: ${f} was written")
+      math(EXPR n "${failures} + 1")
+      set(failures ${n} PARENT_SCOPE)
+    endif()
+  endforeach()
+endfunction()
+
 # like run_cli, for a shell command line (limits set with ulimit, redirections);
 # the tool is $SPECTRALSEG in it
 function(run_sh expect_rc pattern script)
@@ -137,6 +180,86 @@ run_cli(1 "larger than the number of faces" segment ${WORK}/quads.off --k 13 --l
 run_cli(2 "positive integer" segment ${WORK}/quads.off --k 0 --labels ${WORK}/q.seg)
 run_cli(2 "positive integer" segment ${WORK}/quads.off --k 3x --labels ${WORK}/q.seg)
 run_cli(0 "segments: 12" segment ${WORK}/quads.off --k 12 --labels ${WORK}/q.seg -q)
+
+# --- one version: the tool's is the CMake project's (include/SpectralSeg/version.h)
+run_cli(0 "^spectralseg ${VERSION}\n$" --version)
+
+# --- usage errors, CLI11's included, exit with 2 and a message that starts with error:
+run_cli(2 "^error: --labels is required" segment ${WORK}/quads.off --k 2)
+run_cli(2 "^error: --labels: 1 required TEXT missing" segment ${WORK}/quads.off --k 2 --labels)
+run_cli(2 "^error: --k: At Most 1 required but received 2" segment ${WORK}/quads.off --k 2 --k 3 --labels ${WORK}/q.seg)
+run_cli(2 "^error: --kernel: " segment ${WORK}/quads.off --k 2 --kernel cubic --labels ${WORK}/q.seg)
+run_cli(2 "^error: --threads: 'many'" segment ${WORK}/quads.off --k 2 --threads many --labels ${WORK}/q.seg)
+run_cli(2 "^error: The following argument was not expected: extra" info ${WORK}/quads.off extra)
+run_cli(2 "^error: A subcommand is required" --quiet)
+run_cli(0 "Usage: [^ ]*spectralseg segment" segment --help)
+
+# --- mesh outputs: PLY, binary PLY, OBJ + MTL, one file per part
+file(REMOVE_RECURSE ${WORK}/parts ${WORK}/q.obj ${WORK}/q.mtl)
+run_cli(0 "mesh: .*q.obj\nmaterials: .*q.mtl\nparts: .*parts/ \\(2 files\\)" segment ${WORK}/quads.off --k 2
+        --labels ${WORK}/q.seg --mesh ${WORK}/q.obj --parts-dir ${WORK}/parts/ -q)
+expect_files(segment q.obj q.mtl parts/part_000.ply parts/part_001.ply)
+file(READ ${WORK}/q.mtl mtl)
+if(NOT mtl MATCHES "newmtl segment_0\n.*newmtl segment_1\n")
+  message("FAIL: q.mtl has no material per segment: ${mtl}")
+  math(EXPR failures "${failures} + 1")
+endif()
+run_cli(0 "mesh: .*q_bin.ply" render ${WORK}/quads.off ${WORK}/q.seg --mesh ${WORK}/q_bin.ply --binary -q)
+file(READ ${WORK}/q_bin.ply ply LIMIT 60)
+if(NOT ply MATCHES "^ply\nformat binary_little_endian 1.0\n")
+  message("FAIL: --binary did not write a binary PLY: ${ply}")
+  math(EXPR failures "${failures} + 1")
+endif()
+
+# --- outputs checked before any work: the labels are not written when
+# another output would fail (bad format: exit 2; unwritable: exit 1)
+file(REMOVE ${WORK}/early.seg)
+run_cli(2 "^error: --mesh '.*out.xyz': unsupported format" segment ${DATA}/elephant.off --k 4
+        --labels ${WORK}/early.seg --mesh ${WORK}/out.xyz)
+run_cli(2 "--mesh '.*out': unsupported format" render ${WORK}/quads.off ${WORK}/q.seg --mesh ${WORK}/out)
+file(MAKE_DIRECTORY ${WORK}/blocked.mtl)
+run_cli(1 "cannot write '.*blocked.mtl': it is a directory" segment ${DATA}/elephant.off --k 4
+        --labels ${WORK}/early.seg --mesh ${WORK}/blocked.obj)
+run_cli(1 "cannot write '.*nodir/x.ply': cannot create a file in" segment ${DATA}/elephant.off --k 4
+        --labels ${WORK}/early.seg --mesh ${WORK}/nodir/x.ply)
+run_cli(1 "cannot write parts into '.*quads.off': it is not a directory" segment ${DATA}/elephant.off --k 4
+        --labels ${WORK}/early.seg --parts-dir ${WORK}/quads.off)
+run_cli(2 "--labels '-': only --json can write to standard output" segment ${DATA}/elephant.off --k 4 --labels -)
+run_cli(2 "--labels and --json name the same file" segment ${DATA}/elephant.off --k 4
+        --labels ${WORK}/early.seg --json ${WORK}/../cli_work/early.seg)
+run_cli(2 "--labels and --mesh \\(its material library\\) name the same file" segment ${DATA}/elephant.off --k 4
+        --labels ${WORK}/early.mtl --mesh ${WORK}/early.obj)
+expect_absent("refused outputs" early.seg early.mtl early.obj out.xyz blocked.obj)
+
+# --- --json -: the report on standard output, and nothing else there
+run_cli_json(segments 2 segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --mesh ${WORK}/q_json.ply --json -)
+run_cli_json("scores;rand_index_error" 0.0 eval --mesh ${WORK}/quads.off ${WORK}/q.seg ${WORK}/q.seg --json -)
+run_cli(0 "labels: .*q.seg" segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --json -)
+
+# --- a warning for options that are given but not used
+run_cli(0 "warning: --samples is ignored: .*--sampling exact" segment ${WORK}/quads.off --k 2 --sampling exact
+        --samples 5 --labels ${WORK}/q.seg)
+run_cli(0 "warning: --samples was ignored: --sampling auto chose the exact embedding" segment ${WORK}/quads.off
+        --k 2 --samples 5 --labels ${WORK}/q.seg)
+run_cli(0 "warning: --max-k is ignored: it applies to --k auto" segment ${WORK}/quads.off --k 2 --max-k 5
+        --labels ${WORK}/q.seg)
+run_cli(0 "warning: --eta is ignored: it applies to --k auto --auto-method salient-cuts" segment ${WORK}/quads.off
+        --k auto --eta 0.2 --labels ${WORK}/q.seg)
+run_cli(0 "warning: --kernel is ignored: --auto-method salient-cuts" segment ${WORK}/quads.off --k auto
+        --auto-method salient-cuts --kernel gaussian --labels ${WORK}/q.seg)
+run_cli(0 "warning: --extra-clusters is ignored" segment ${WORK}/quads.off --k auto --extra-clusters 2
+        --labels ${WORK}/q.seg)
+run_cli(0 "warning: --graph-cut-backend is ignored" segment ${WORK}/quads.off --k 2 --no-graph-cut
+        --graph-cut-backend boost-csr --labels ${WORK}/q.seg)
+run_cli(0 "warning: --binary is ignored" segment ${WORK}/quads.off --k 2 --binary --mesh ${WORK}/q.off
+        --labels ${WORK}/q.seg)
+run_cli(0 "warning: --weights is ignored: it applies to --metric part-aware" distance ${WORK}/quads.off --from 0
+        --metric geodesic --weights 1,1 --field ${WORK}/q.txt)
+run_cli(0 "warning: --view is ignored" render ${WORK}/quads.off ${WORK}/q.seg --mesh ${WORK}/q.ply
+        --view 0,0,-1,0,1,0)
+file(WRITE ${WORK}/octahedron.off "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n")
+run_cli_without(0 "warning" segment ${WORK}/octahedron.off --k 2 --sampling nystrom --samples 5 --seed 3
+                --metric angular --labels ${WORK}/o.seg)
 
 # --- hostile input: legal files read, malformed ones refused with the place at fault
 file(WRITE ${WORK}/int.ply "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty short y\nproperty uchar z\nelement face 1\nproperty list uchar ushort vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")

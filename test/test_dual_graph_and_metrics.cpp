@@ -5,6 +5,8 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/write_colored_mesh.h>
+#include <SpectralSeg/IO/write_segment_parts.h>
+#include <SpectralSeg/IO/write_segmented_mesh.h>
 #include <SpectralSeg/Metrics/normalize_weights.h>
 #include <SpectralSeg/Metrics/Angular_weight.h>
 #include <SpectralSeg/Metrics/Any_weight.h>
@@ -440,4 +442,97 @@ TEST_CASE("make_dual_graph joins parts that touch, links specks, keeps large sep
   // no specks: C stays apart too
   CHECK(make_dual_graph(m, parameters::speck_area_fraction(0.)).number_of_components() == 3);
   CHECK_THROWS_AS(make_dual_graph(m, parameters::contact_distance(-1.)), Invalid_input);
+
+TEST_CASE("write_segmented_mesh: PLY vertices copied per segment, labels, binary, OBJ materials, parts",
+          "[io][segmented]")
+{
+  // two unit squares side by side, two triangles each; vertices 2 and 3 are
+  // shared by the squares, which are segments 0 and 1
+  Mesh mesh = test_meshes::to_mesh<Mesh>(test_meshes::square_strip(2));
+  auto segment = mesh.add_property_map<Mesh::Face_index, int>("f:segment", 0).first;
+  for(Mesh::Face_index f : faces(mesh))
+    segment[f] = f.idx() < 2 ? 0 : 1;
+  const std::string dir = (std::filesystem::temp_directory_path() / "spectralseg_segmented_test").string();
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto read = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<std::string> lines;
+    for(std::string l; std::getline(in, l);)
+      lines.push_back(l);
+    return lines;
+  };
+  const auto has = [](const std::vector<std::string>& lines, const std::string& line) {
+    return std::count(lines.begin(), lines.end(), line);
+  };
+  const auto rgb = [](int s) {
+    const Rendering::Rgb c = s < 0 ? Rendering::missing_color() : Rendering::label_color(std::size_t(s));
+    return std::to_string(int(c.r)) + " " + std::to_string(int(c.g)) + " " + std::to_string(int(c.b));
+  };
+
+  CHECK(IO::mesh_output_format("a/b.PLY") == IO::Mesh_output_format::ply);
+  CHECK(IO::mesh_output_format("b.obj") == IO::Mesh_output_format::obj);
+  CHECK(IO::mesh_output_format("b.off") == IO::Mesh_output_format::off);
+  CHECK(IO::mesh_output_format("b.xyz") == IO::Mesh_output_format::unsupported);
+  CHECK(IO::mesh_output_format("a.ply/b") == IO::Mesh_output_format::unsupported);
+  CHECK(IO::material_library_path("out/m.obj") == "out/m.mtl");
+  CHECK(IO::segment_part_path("d", 7) == "d/part_007.ply");
+  CHECK(IO::segment_part_path("d/", 1234, 4) == "d/part_1234.ply");
+
+  // ASCII PLY: 6 vertices, the 2 shared ones copied: 8, each in its segment's colour
+  const std::string ply = dir + "/m.ply";
+  IO::write_segmented_mesh(ply, mesh, segment);
+  const std::vector<std::string> p = read(ply);
+  REQUIRE(p.size() == 18 + 8 + 4);
+  CHECK(has(p, "element vertex 8") == 1);
+  CHECK(has(p, "element face 4") == 1);
+  CHECK(has(p, "property int segment") == 1);
+  CHECK(has(p, "0 0 0 " + rgb(0)) == 1);
+  CHECK(has(p, "1 0 0 " + rgb(0)) == 1); // vertex 2, shared: once per segment
+  CHECK(has(p, "1 0 0 " + rgb(1)) == 1);
+  CHECK(has(p, "2 1 0 " + rgb(1)) == 1);
+  for(int f = 0; f < 4; ++f)
+  {
+    const std::string& face = p[18 + 8 + std::size_t(f)];
+    const int s = f < 2 ? 0 : 1;
+    CHECK(face.substr(face.size() - rgb(s).size() - 2) == rgb(s) + " " + std::to_string(s));
+  }
+
+  // binary: the same header in binary_little_endian, 8 x 27 + 4 x 20 bytes of data
+  const std::string binary = dir + "/m_binary.ply";
+  IO::write_segmented_mesh(binary, mesh, segment, parameters::use_binary_mode(true));
+  const std::vector<std::string> b = read(binary);
+  CHECK(b[1] == "format binary_little_endian 1.0");
+  std::size_t header = 0;
+  for(std::size_t i = 0; i < 18; ++i)
+    header += b[i].size() + 1;
+  CHECK(std::filesystem::file_size(binary) == header + 8 * 27 + 4 * 20);
+
+  // OBJ: the vertices as they are, one material per run of faces of a segment
+  const std::string obj = dir + "/m.obj";
+  IO::write_segmented_mesh(obj, mesh, segment);
+  const std::vector<std::string> o = read(obj);
+  CHECK(has(o, "mtllib m.mtl") == 1);
+  CHECK(std::count_if(o.begin(), o.end(), [](const std::string& l) { return l.rfind("v ", 0) == 0; }) == 6);
+  CHECK(has(o, "usemtl segment_0") == 1);
+  CHECK(has(o, "usemtl segment_1") == 1);
+  const std::vector<std::string> mtl = read(dir + "/m.mtl");
+  CHECK(has(mtl, "newmtl segment_0") == 1);
+  CHECK(has(mtl, "newmtl segment_1") == 1);
+  CHECK(has(mtl, "Kd 0.3059 0.4745 0.6549") == 1); // label_color(0) = #4E79A7
+
+  // a face without segment (-1): grey, label -1, in no part
+  segment[Mesh::Face_index(3)] = -1;
+  IO::write_segmented_mesh(ply, mesh, segment);
+  CHECK(read(ply).back().substr(read(ply).back().size() - rgb(-1).size() - 3) == rgb(-1) + " -1");
+  const std::vector<std::string> parts = IO::write_segment_parts(dir + "/parts", mesh, segment);
+  REQUIRE(parts == std::vector<std::string>{dir + "/parts/part_000.ply", dir + "/parts/part_001.ply"});
+  const std::vector<std::string> part1 = read(parts[1]);
+  CHECK(has(part1, "element vertex 3") == 1);
+  CHECK(has(part1, "element face 1") == 1);
+
+  CHECK_THROWS_AS(IO::write_segmented_mesh(dir + "/m.stl", mesh, segment), Io_error);
+  CHECK_THROWS_AS(IO::write_segment_parts(ply, mesh, segment), Io_error); // a file, not a directory
+  CHECK(!std::filesystem::exists(dir + "/m.stl"));
+  std::filesystem::remove_all(dir);
 }

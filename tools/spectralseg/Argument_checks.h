@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace spectralseg_cli {
@@ -125,6 +126,58 @@ inline void check_outputs_writable(std::initializer_list<std::string> paths)
 {
   for(const std::string& path : paths)
     SpectralSeg::IO::check_writable(path);
+}
+
+// An output file a command will write: the option that names it and its path
+// (empty: not asked for); `-` means standard output where `to_stdout` allows it.
+struct Output_file
+{
+  std::string option;
+  std::string path;
+  bool to_stdout = false;
+};
+
+// `dir/name` with the directory resolved (symbolic links, `.`, `..`), to
+// compare output paths; the path itself if its directory does not exist.
+inline std::string comparable_path(const std::string& path)
+{
+  const std::string resolved = SpectralSeg::IO::internal::resolved_path(path);
+  if(resolved != path)
+    return resolved; // it exists
+  const std::string dir = SpectralSeg::IO::internal::directory_of(path);
+  const std::string base = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  const std::string real_dir = SpectralSeg::IO::internal::resolved_path(dir);
+  return real_dir == dir && dir != "." ? path : real_dir + "/" + base;
+}
+
+// Before any work. Usage errors first (exit code 2): `-` for an output that
+// cannot go to standard output, two outputs naming the same file. Then each
+// file can be created (exit code 1, see check_outputs_writable()).
+inline void check_outputs(const std::vector<Output_file>& outputs)
+{
+  std::vector<std::pair<std::string, const Output_file*>> seen;
+  for(const Output_file& o : outputs)
+  {
+    if(o.path.empty() || (o.to_stdout && o.path == "-"))
+      continue;
+    if(o.path == "-")
+      throw Usage_error(o.option + " '-': only --json can write to standard output; give a file name");
+    const std::string key = comparable_path(o.path);
+    for(const auto& other : seen)
+      if(other.first == key)
+        throw Usage_error(other.second->option + " and " + o.option + " name the same file '" + o.path + "'");
+    seen.emplace_back(key, &o);
+  }
+  for(const Output_file& o : outputs)
+    if(!o.path.empty() && !(o.to_stdout && o.path == "-"))
+      SpectralSeg::IO::check_writable(o.path);
+}
+
+// Whether the option `name` was given on the command line of `cmd` (false
+// when the options were not filled from a command line: `cmd` is null).
+inline bool given(const CLI::App* cmd, const std::string& name)
+{
+  return cmd != nullptr && cmd->count(name) > 0;
 }
 
 } // namespace spectralseg_cli

@@ -29,11 +29,13 @@ struct Distance_options
   std::string field;
   std::string png;
   unsigned threads = 0;
+  const CLI::App* cli = nullptr; // the parsed subcommand (null: none)
 };
 
 inline void add_distance_command(CLI::App& app, Distance_options& o)
 {
   CLI::App* cmd = app.add_subcommand("distance", "Distance field from one face under a dual-graph metric");
+  o.cli = cmd;
   cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
   cmd->add_option("--from", o.from, "source face, by its index in the file (0-based)")->required();
   add_metric_options(*cmd, o.metric);
@@ -45,7 +47,9 @@ inline void add_distance_command(CLI::App& app, Distance_options& o)
 
 inline int run_distance(const Distance_options& o, Progress_printer& out)
 {
-  check_outputs_writable({o.field, o.png});
+  check_outputs({{"--field", o.field}, {"--png", o.png}});
+  for(const std::string& w : metric_option_warnings(o.cli, o.metric))
+    out.message("warning: " + w);
   const Loaded_mesh m(o.mesh, out);
   const std::size_t source = m.mesh_face_of_input_face(o.from);
   const SpectralSeg::Execution exec(o.threads, out.callback());

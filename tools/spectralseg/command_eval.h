@@ -40,7 +40,9 @@ inline void add_eval_command(CLI::App& app, Eval_options& o)
                                        "in file order (.seg)")->required();
   cmd->add_option("GT", o.ground_truths, "one or more ground-truth segmentations, same format; each score is "
                                          "averaged over them")->required();
-  cmd->add_option("--json", o.json, "also write the averaged and per-ground-truth scores to this JSON file");
+  cmd->add_option("--json", o.json,
+                  "also write the averaged and per-ground-truth scores to this JSON file ('-': on standard output, "
+                  "instead of the lines of scores)");
 }
 
 inline nlohmann::ordered_json scores_json(const SpectralSeg::Evaluation::Scores& s)
@@ -59,7 +61,7 @@ inline nlohmann::ordered_json scores_json(const SpectralSeg::Evaluation::Scores&
 inline int run_eval(const Eval_options& o, const Progress_printer& out)
 {
   namespace E = SpectralSeg::Evaluation;
-  check_outputs_writable({o.json});
+  check_outputs({{"--json", o.json, true}});
   const Loaded_mesh m(o.mesh, out);
   const std::vector<int> predicted = labels_in_mesh_order(m, o.predicted);
   std::vector<std::vector<int>> truths;
@@ -77,15 +79,19 @@ inline int run_eval(const Eval_options& o, const Progress_printer& out)
                 " ground truths (exactly one of the two segmentations has a single segment): left out of its mean");
 
   const nlohmann::ordered_json averaged = scores_json(mean);
-  std::cout << "ground_truths: " << truths.size() << "\n";
-  std::cout << std::setprecision(6);
-  for(auto it = averaged.begin(); it != averaged.end(); ++it)
+  const bool json_to_stdout = o.json == "-";
+  if(!json_to_stdout) // with --json -, the JSON report is all that goes to standard output
   {
-    std::cout << it.key() << ": ";
-    if(it->is_null())
-      std::cout << "nan\n";
-    else
-      std::cout << it->get<double>() << "\n";
+    std::cout << "ground_truths: " << truths.size() << "\n";
+    std::cout << std::setprecision(6);
+    for(auto it = averaged.begin(); it != averaged.end(); ++it)
+    {
+      std::cout << it.key() << ": ";
+      if(it->is_null())
+        std::cout << "nan\n";
+      else
+        std::cout << it->get<double>() << "\n";
+    }
   }
 
   if(!o.json.empty())
@@ -106,8 +112,13 @@ inline int run_eval(const Eval_options& o, const Progress_printer& out)
       per.push_back(std::move(g));
     }
     j["per_ground_truth"] = std::move(per);
-    SpectralSeg::IO::write_text_file(o.json, j.dump(2) + "\n");
-    std::cout << "json: " << o.json << "\n";
+    if(json_to_stdout)
+      std::cout << j.dump(2) << "\n";
+    else
+    {
+      SpectralSeg::IO::write_text_file(o.json, j.dump(2) + "\n");
+      std::cout << "json: " << o.json << "\n";
+    }
   }
   return 0;
 }

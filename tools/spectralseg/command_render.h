@@ -1,13 +1,13 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// spectralseg render MESH LABELS.seg [--png OUT.png] [--mesh OUT.ply] [--view dx,dy,dz,ux,uy,uz ...]
+// spectralseg render MESH LABELS.seg [--png OUT.png] [--mesh OUT.ply|.obj|.off] [--binary] [--parts-dir DIR] [--view dx,dy,dz,ux,uy,uz ...]
 #ifndef SPECTRALSEG_TOOLS_COMMAND_RENDER_H
 #define SPECTRALSEG_TOOLS_COMMAND_RENDER_H
 
 #include "Argument_checks.h"
 #include "Loaded_mesh.h"
+#include "Mesh_outputs.h"
 
-#include <SpectralSeg/IO/write_colored_mesh.h>
 #include <SpectralSeg/Rendering/render_mesh_geometry.h>
 
 #include <CLI/CLI.hpp>
@@ -27,7 +27,10 @@ struct Render_command_options
   std::string labels;
   std::string png;
   std::string out_mesh;
+  bool binary = false;
+  std::string parts_dir;
   std::vector<std::string> views;
+  const CLI::App* cli = nullptr; // the parsed subcommand (null: none)
 };
 
 // "dx,dy,dz,ux,uy,uz" -> a view
@@ -64,10 +67,11 @@ inline void add_render_command(CLI::App& app, Render_command_options& o)
   CLI::App* cmd = app.add_subcommand(
     "render", "Draw a segmentation given as a label file (for example a ground truth, or the output of "
               "'segment'): a PNG picture from three sides and/or a mesh with one colour per segment");
+  o.cli = cmd;
   cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl) the labels refer to")->required();
   cmd->add_option("LABELS", o.labels, "one integer label per face of the mesh file, in file order (.seg)")->required();
   cmd->add_option("--png", o.png, "output: picture of the segments");
-  cmd->add_option("--mesh", o.out_mesh, "output: the mesh with one colour per segment (.ply or .off)");
+  add_mesh_output_options(*cmd, o.out_mesh, o.binary, o.parts_dir);
   cmd->add_option("--view", o.views,
                   "a view of the picture, repeatable: viewing direction (from the camera into the scene) and up "
                   "vector as dx,dy,dz,ux,uy,uz (default: 0,0,-1,0,1,0 and -1,0,0,0,1,0 and 0,0,1,0,1,0: "
@@ -76,8 +80,8 @@ inline void add_render_command(CLI::App& app, Render_command_options& o)
 
 inline int run_render(const Render_command_options& o, const Progress_printer& out)
 {
-  if(o.png.empty() && o.out_mesh.empty())
-    throw Usage_error("render: nothing to write; give --png and/or --mesh");
+  if(o.png.empty() && o.out_mesh.empty() && o.parts_dir.empty())
+    throw Usage_error("render: nothing to write; give --png, --mesh and/or --parts-dir");
   SpectralSeg::Rendering::Render_options ro;
   if(!o.views.empty())
   {
@@ -85,14 +89,16 @@ inline int run_render(const Render_command_options& o, const Progress_printer& o
     for(std::size_t i = 0; i < o.views.size(); ++i)
       ro.views.push_back(parse_view(o.views[i], i));
   }
-  check_outputs_writable({o.out_mesh, o.png});
+  check_mesh_outputs(o.out_mesh, o.parts_dir, {{"--png", o.png}});
+  std::vector<std::string> warnings = mesh_output_warnings(o.cli, o.out_mesh, o.parts_dir);
+  if(o.png.empty() && given(o.cli, "--view"))
+    warnings.push_back("--view is ignored: it applies to --png");
+  for(const std::string& w : warnings)
+    out.message("warning: " + w);
   const Loaded_mesh m(o.mesh, out);
   const std::vector<int> labels = labels_in_mesh_order(m, o.labels);
-  if(!o.out_mesh.empty())
-  {
-    SpectralSeg::IO::write_colored_mesh(o.out_mesh, m.graph.geometry(), SpectralSeg::Rendering::label_colors(labels));
-    std::cout << "mesh: " << o.out_mesh << "\n";
-  }
+  write_mesh_outputs(o.out_mesh, o.binary, o.parts_dir, m, labels,
+                     [](const std::string& line) { std::cout << line << "\n"; });
   if(!o.png.empty())
   {
     SpectralSeg::Rendering::render_face_labels_png(o.png, m.graph.geometry(), labels, ro);

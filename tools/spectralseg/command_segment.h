@@ -6,11 +6,11 @@
 
 #include "Argument_checks.h"
 #include "Loaded_mesh.h"
+#include "Mesh_outputs.h"
 #include "Work_limits.h"
 #include "metric_choice.h"
 #include "salient_cut_segmentation.h"
 
-#include <SpectralSeg/IO/write_colored_mesh.h>
 #include <SpectralSeg/IO/write_face_values.h>
 #include <SpectralSeg/Rendering/render_mesh_geometry.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
@@ -44,7 +44,10 @@ struct Segment_options
   std::size_t extra_clusters = SpectralSeg::K_way_options().extra_clusters;
   double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
   std::string labels, out_mesh, png, json;
+  bool binary = false;   // PLY outputs in binary
+  std::string parts_dir; // one PLY file per segment
   Salient_cut_options salient;
+  const CLI::App* cli = nullptr; // the parsed subcommand, to tell the options given (null: none)
 };
 
 // The options of the method, all but the input and the outputs: shared by
@@ -84,33 +87,81 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
 inline void add_segment_command(CLI::App& app, Segment_options& o)
 {
   CLI::App* cmd = app.add_subcommand("segment", "Segment a mesh into k parts by spectral clustering (k-way), or into as many parts as it has (--k auto)");
+  o.cli = cmd;
   cmd->add_option("MESH", o.mesh, "mesh file (.off, .obj, .ply, .stl)")->required();
   add_segment_method_options(cmd, o);
   cmd->add_option("--labels", o.labels, "output: one segment label per face of the file, in file order")->required();
-  cmd->add_option("--mesh", o.out_mesh, "output: the mesh with one colour per segment (.ply or .off)");
+  add_mesh_output_options(*cmd, o.out_mesh, o.binary, o.parts_dir);
   cmd->add_option("--png", o.png, "output: picture of the segments");
-  cmd->add_option("--json", o.json, "output: report with the stage timings, segments and their areas");
+  cmd->add_option("--json", o.json,
+                  "output: report with the stage timings, segments and their areas ('-': on standard output, "
+                  "which then carries nothing else)");
+}
+
+// Warnings for options given but not used by the method they ask for.
+inline std::vector<std::string> segment_option_warnings(const Segment_options& o)
+{
+  const CLI::App* cmd = o.cli;
+  std::vector<std::string> w;
+  const auto ignored = [&](std::initializer_list<const char*> options, const std::string& why) {
+    for(const char* option : options)
+      if(given(cmd, option))
+        w.push_back(std::string(option) + " is ignored: " + why);
+  };
+  const bool automatic = o.k == "auto";
+  const bool salient = automatic && o.salient.method == "salient-cuts";
+  if(!automatic)
+    ignored({"--max-k", "--min-boundary-contrast", "--auto-method"}, "it applies to --k auto");
+  if(!salient)
+    ignored({"--eta", "--structure-only", "--min-part-area", "--max-parts", "--parts", "--depth"},
+            "it applies to --k auto --auto-method salient-cuts");
+  if(salient)
+    ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--kernel", "--sampling",
+             "--samples", "--seed", "--no-graph-cut", "--graph-cut-backend", "--extra-clusters", "--max-k",
+             "--min-boundary-contrast"},
+            "--auto-method salient-cuts uses none of the k-way options");
+  else
+  {
+    if(automatic)
+      ignored({"--extra-clusters"}, "--k auto over-segments into --max-k clusters itself");
+    if(o.sampling == "exact")
+      ignored({"--samples", "--seed"}, "it sets the Nyström sampling, and --sampling exact takes no samples");
+    if(o.no_graph_cut)
+      ignored({"--graph-cut-backend"}, "--no-graph-cut skips the graph cut");
+    for(const std::string& m : metric_option_warnings(cmd, o.metric))
+      w.push_back(m);
+  }
+  for(const std::string& m : mesh_output_warnings(cmd, o.out_mesh, o.parts_dir))
+    w.push_back(m);
+  return w;
 }
 
 // The outputs of `segment`: labels, coloured mesh, picture, JSON report.
+// (with `--json -` the JSON report is all that goes to standard output: the
+// lines naming the files go to standard error, unless -q)
 template <typename Lap>
 int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const std::vector<int>& labels,
                           const SpectralSeg::Execution& exec, const std::string& metric, nlohmann::ordered_json& report,
-                          const std::vector<std::pair<std::string, double>>& timings, Lap& lap)
+                          const std::vector<std::pair<std::string, double>>& timings, Lap& lap,
+                          const Progress_printer& out)
 {
+  const bool json_to_stdout = o.json == "-";
+  const auto say = [&](const std::string& line) {
+    if(json_to_stdout)
+      out.message(line);
+    else
+      std::cout << line << "\n";
+  };
   const std::size_t n = labels.size();
   const std::size_t segments = labels.empty() ? 0 : std::size_t(*std::max_element(labels.begin(), labels.end()) + 1);
   SpectralSeg::IO::write_face_values(o.labels, SpectralSeg::IO::values_in_input_order(m.report, labels, -1));
-  std::cout << "segments: " << segments << "\nlabels: " << o.labels << "\n";
-  if(!o.out_mesh.empty())
-  {
-    SpectralSeg::IO::write_colored_mesh(o.out_mesh, m.graph.geometry(), SpectralSeg::Rendering::label_colors(labels));
-    std::cout << "mesh: " << o.out_mesh << "\n";
-  }
+  say("segments: " + std::to_string(segments));
+  say("labels: " + o.labels);
+  write_mesh_outputs(o.out_mesh, o.binary, o.parts_dir, m, labels, say);
   if(!o.png.empty())
   {
     SpectralSeg::Rendering::render_face_labels_png(o.png, m.graph.geometry(), labels);
-    std::cout << "png: " << o.png << "\n";
+    say("png: " + o.png);
   }
   lap("write");
 
@@ -147,8 +198,13 @@ int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const 
     }
     t["total"] = total;
     report["timings_seconds"] = t;
-    SpectralSeg::IO::write_text_file(o.json, report.dump(2) + "\n");
-    std::cout << "json: " << o.json << "\n";
+    if(json_to_stdout)
+      std::cout << report.dump(2) << "\n";
+    else
+    {
+      SpectralSeg::IO::write_text_file(o.json, report.dump(2) + "\n");
+      say("json: " + o.json);
+    }
   }
   return 0;
 }
@@ -187,7 +243,9 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   };
 
   const std::size_t k = parse_k(o.k);
-  check_outputs_writable({o.labels, o.out_mesh, o.png, o.json});
+  check_mesh_outputs(o.out_mesh, o.parts_dir, {{"--labels", o.labels}, {"--png", o.png}, {"--json", o.json, true}});
+  for(const std::string& w : segment_option_warnings(o))
+    out.message("warning: " + w);
 
   const Loaded_mesh m(o.mesh, out);
   lap("read");
@@ -200,7 +258,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   {
     std::vector<int> labels = run_salient_cuts(o.salient, m.graph, exec, report, timings);
     t0 = clock::now();
-    return write_segment_outputs(o, m, labels, exec, "", report, timings, lap);
+    return write_segment_outputs(o, m, labels, exec, "", report, timings, lap, out);
   }
   check_segmentation_fits(n, k == 0 ? std::min(o.max_k, n - 1) : std::min(k + o.extra_clusters, n - 1), o.sampling,
                           o.samples, SpectralSeg::Embedding::Embedding_options().exact_face_limit);
@@ -263,7 +321,14 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   report["samples"] = r.embedding.samples;
   report["kernel_width"] = r.embedding.kernel_width;
   report["graph_cut"] = !o.no_graph_cut;
-  return write_segment_outputs(o, m, r.labels, exec, metric.name(), report, timings, lap);
+  if(r.embedding.exact && o.sampling == "auto")
+    for(const char* option : {"--samples", "--seed"})
+      if(given(o.cli, option))
+        out.message(std::string("warning: ") + option + " was ignored: --sampling auto chose the exact embedding (" +
+                    std::to_string(n) + " faces, at most " +
+                    std::to_string(SpectralSeg::Embedding::Embedding_options().exact_face_limit) +
+                    "), which takes no samples");
+  return write_segment_outputs(o, m, r.labels, exec, metric.name(), report, timings, lap, out);
 }
 
 } // namespace spectralseg_cli

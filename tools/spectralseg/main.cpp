@@ -10,6 +10,7 @@
 #include "Argument_checks.h"
 
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/version.h>
 
 #include <CLI/CLI.hpp>
 
@@ -55,7 +56,10 @@ int main(int argc, char** argv)
   app.fallthrough();
   bool quiet = false;
   app.add_flag("-q,--quiet", quiet, "no progress or warnings on stderr");
-  app.set_version_flag("--version", "spectralseg 0.1.0");
+  app.set_version_flag("--version", "spectralseg " SPECTRALSEG_VERSION_STRING);
+  // CLI11's parse errors are usage errors: "error: ..." and exit code 2 (below)
+  app.failure_message(
+    [](const CLI::App* a, const CLI::Error& e) { return "error: " + CLI::FailureMessage::simple(a, e); });
 
   Info_options info;
   add_info_command(app, info);
