@@ -442,6 +442,7 @@ TEST_CASE("make_dual_graph joins parts that touch, links specks, keeps large sep
   // no specks: C stays apart too
   CHECK(make_dual_graph(m, parameters::speck_area_fraction(0.)).number_of_components() == 3);
   CHECK_THROWS_AS(make_dual_graph(m, parameters::contact_distance(-1.)), Invalid_input);
+}
 
 TEST_CASE("write_segmented_mesh: PLY vertices copied per segment, labels, binary, OBJ materials, parts",
           "[io][segmented]")
