@@ -334,6 +334,14 @@ if(EXISTS ${SHARED}/meshes)
   run_cli(0 "non_manifold_edges: [1-9]" info ${SHARED}/meshes/truck_nonmanifold.off)
   run_cli(0 "duplicate faces dropped" info ${SHARED}/meshes/dragon_res3_nonmanifold.off)
   run_cli(0 "components: [2-9]" info ${SHARED}/meshes/teapot_patches.off)
+  # parts split apart by the repairs, or touching, are joined; specks join the nearest part
+  run_cli(0 "components: 1\n" info ${SHARED}/meshes/dragon_res3_nonmanifold.off)
+  foreach(name dragon_res3_nonmanifold pig_stl_soup wuson_unwelded)
+    run_cli(0 "segments: 6\n" segment ${SHARED}/meshes/${name}.off --k 6 --labels ${WORK}/${name}_6.seg -q)
+  endforeach()
+  # an assembly of separate pieces: said, not hidden
+  run_cli(0 "segments instead of 6: the mesh is [0-9]+ separate parts that do not touch" segment
+          ${SHARED}/meshes/truck_nonmanifold.off --k 6 --labels ${WORK}/truck_6.seg)
 else()
   message("skipped the shared-mesh checks: ${SHARED}/meshes is absent")
 endif()
