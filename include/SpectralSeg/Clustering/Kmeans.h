@@ -143,16 +143,20 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
       r.converged = true;
       break;
     }
-    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(Eigen::Index(kk), points.cols());
+    // the sums in point order, as before, from the contiguous copy
+    std::vector<double> sum(kk * dims, 0.);
     std::vector<std::size_t> count(kk, 0);
     for(std::size_t i = 0; i < n; ++i)
     {
-      sum.row(r.labels[i]) += points.row(Eigen::Index(i));
-      ++count[std::size_t(r.labels[i])];
+      const std::size_t c = std::size_t(r.labels[i]);
+      for(std::size_t j = 0; j < dims; ++j)
+        sum[c * dims + j] += p[i * dims + j];
+      ++count[c];
     }
     for(std::size_t c = 0; c < kk; ++c)
       if(count[c] > 0)
-        r.centroids.row(Eigen::Index(c)) = sum.row(Eigen::Index(c)) / double(count[c]);
+        for(std::size_t j = 0; j < dims; ++j)
+          r.centroids(Eigen::Index(c), Eigen::Index(j)) = sum[c * dims + j] / double(count[c]);
   }
   return r;
 }
