@@ -14,9 +14,11 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace SpectralSeg {
@@ -72,9 +74,8 @@ public:
   /// Distance from `origin` along the unit vector `direction` to the first
   /// face hit, ignoring face `skip`; `+infinity` if the ray hits nothing.
   /// If `hit_face` is not null it receives the face hit (or `no_face`).
-  /// With a finite `max_distance`, a ray that hits nothing closer than it may
-  /// return `+infinity` early (a cheap segment test runs first); a hit that
-  /// is closer is always returned exactly.
+  /// With a finite `max_distance`, only hits at most that far count (the
+  /// search skips the boxes beyond it).
   double first_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, size_type skip = no_face,
                    size_type* hit_face = nullptr,
                    double max_distance = std::numeric_limits<double>::infinity()) const
@@ -83,34 +84,20 @@ public:
       *hit_face = no_face;
     if(triangles_.empty())
       return std::numeric_limits<double>::infinity();
-    if(std::isfinite(max_distance))
-    {
-      // The segment starts a hair away from the origin so that the face the
-      // origin lies on (the skipped one) does not count.
-      const double offset = 1e-9 * diagonal_;
-      if(max_distance <= offset)
-        return std::numeric_limits<double>::infinity();
-      const K::Segment_3 segment(point(origin + offset * direction), point(origin + max_distance * direction));
-      if(!tree_.do_intersect(segment))
-        return std::numeric_limits<double>::infinity();
-    }
-    const K::Point_3 o = point(origin);
-    const K::Ray_3 ray(o, K::Vector_3(direction.x(), direction.y(), direction.z()));
-    const Iterator skipped = skip == no_face ? triangles_.cend() : triangle_of_face(skip);
-    const auto hit = tree_.first_intersection(ray, [skipped](const Iterator& it) { return it == skipped; });
-    if(!hit)
+    // One traversal of the tree for the nearest hit within max_distance,
+    // nearer boxes first: a node is entered only when the ray's stretch up
+    // to the nearest hit so far crosses its box (slab test), and each
+    // triangle is intersected with Moller-Trumbore.
+    Nearest_hit query(origin, direction, max_distance,
+                      skip == no_face ? triangles_.cend() : triangle_of_face(skip));
+    tree_.traversal_with_priority(query, query);
+    if(!query.found)
       return std::numeric_limits<double>::infinity();
-    double t = std::numeric_limits<double>::infinity();
-    if(const K::Point_3* p = boost::get<K::Point_3>(&hit->first))
-      t = std::sqrt(CGAL::squared_distance(o, *p));
-    else if(const K::Segment_3* s = boost::get<K::Segment_3>(&hit->first)) // coplanar ray: nearest end
-      t = std::sqrt((std::min)(CGAL::squared_distance(o, s->source()), CGAL::squared_distance(o, s->target())));
     if(hit_face)
-      *hit_face = face_of_triangle_[static_cast<std::size_t>(hit->second - triangles_.cbegin())];
-    return t;
+      *hit_face = face_of_triangle_[static_cast<std::size_t>(query.hit - triangles_.cbegin())];
+    return query.t;
   }
 
-  /// `first_hit()` for `count` rays from the same origin, skipping the same face
   void first_hits(const Eigen::Vector3d& origin, const Eigen::Vector3d* directions, std::size_t count,
                   size_type skip, double* distances) const
   {
@@ -120,6 +107,100 @@ public:
 
 private:
   static K::Point_3 point(const Eigen::Vector3d& p) { return K::Point_3(p.x(), p.y(), p.z()); }
+
+  // The query and the traversal traits of CGAL's AABB_tree::traversal() at
+  // once: the nearest triangle hit by a ray, within a distance.
+  struct Nearest_hit
+  {
+    double o[3], d[3], inv[3];
+    double t;     // the nearest hit so far, or the bound
+    bool found = false;
+    Iterator hit, skip;
+
+    Nearest_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double max_distance,
+                Iterator skipped)
+      : t(max_distance), skip(skipped)
+    {
+      for(int i = 0; i < 3; ++i)
+      {
+        o[i] = origin[i];
+        d[i] = direction[i];
+        inv[i] = 1. / direction[i];
+      }
+    }
+
+    bool go_further() const { return true; }
+
+    typedef double Priority;
+
+    // where the ray's stretch [0, t] enters the box, or -1 if it misses it
+    double entry(const CGAL::Bbox_3& b) const
+    {
+      double lo = 0., hi = t;
+      for(int i = 0; i < 3; ++i)
+      {
+        double a = (b.min(i) - o[i]) * inv[i], c = (b.max(i) - o[i]) * inv[i];
+        if(a > c)
+          std::swap(a, c);
+        if(!(a <= c)) // NaN: a zero direction component on the slab's plane
+        {
+          if(o[i] < b.min(i) || o[i] > b.max(i))
+            return -1.;
+          continue;
+        }
+        lo = (std::max)(lo, a);
+        hi = (std::min)(hi, c);
+        if(lo > hi)
+          return -1.;
+      }
+      return lo;
+    }
+
+    template <typename Node>
+    bool do_intersect(const Nearest_hit&, const Node& node) const
+    {
+      return entry(node.bbox()) >= 0.;
+    }
+
+    // nearer boxes first
+    template <typename Node>
+    std::pair<bool, Priority> do_intersect_with_priority(const Nearest_hit&, const Node& node) const
+    {
+      const double e = entry(node.bbox());
+      return std::make_pair(e >= 0., -e);
+    }
+
+    void intersection(const Nearest_hit&, const Primitive& primitive)
+    {
+      const Iterator it = primitive.id();
+      if(it == skip)
+        return;
+      const K::Triangle_3& tri = *it;
+      const K::Point_3 &p0 = tri[0], &p1 = tri[1], &p2 = tri[2];
+      const double e1[3] = {p1.x() - p0.x(), p1.y() - p0.y(), p1.z() - p0.z()};
+      const double e2[3] = {p2.x() - p0.x(), p2.y() - p0.y(), p2.z() - p0.z()};
+      const double pv[3] = {d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2], d[0] * e2[1] - d[1] * e2[0]};
+      const double det = e1[0] * pv[0] + e1[1] * pv[1] + e1[2] * pv[2];
+      if(det == 0.)
+        return; // parallel to the triangle's plane
+      const double f = 1. / det;
+      const double s[3] = {o[0] - p0.x(), o[1] - p0.y(), o[2] - p0.z()};
+      const double u = f * (s[0] * pv[0] + s[1] * pv[1] + s[2] * pv[2]);
+      if(u < 0. || u > 1.)
+        return;
+      const double q[3] = {s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2], s[0] * e1[1] - s[1] * e1[0]};
+      const double v = f * (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]);
+      if(v < 0. || u + v > 1.)
+        return;
+      const double h = f * (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]);
+      if(h >= 0. && h <= t && (!found || h < t || it < hit))
+      {
+        t = h;
+        hit = it;
+        found = true;
+      }
+    }
+  };
 
   Iterator triangle_of_face(size_type f) const
   {
