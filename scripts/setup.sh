@@ -12,6 +12,7 @@ PACKAGES=(
   catch2 libcli11-dev nlohmann-json3-dev libpng-dev
   doxygen
   python3 gnuplot-nox
+  pybind11-dev python3-dev python3-numpy
 )
 
 missing=()
