@@ -13,6 +13,7 @@ PACKAGES=(
   doxygen
   python3 gnuplot-nox
   python3-open3d   # the test mesh_outputs_open3d reads the PLY/OBJ outputs back (system python3)
+  pybind11-dev python3-dev python3-numpy
 )
 
 missing=()

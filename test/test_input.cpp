@@ -4,6 +4,7 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/IO/Atomic_output_file.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
+#include <SpectralSeg/IO/triangle_soup_to_mesh.h>
 #include <SpectralSeg/IO/write_face_values.h>
 #include <SpectralSeg/Metrics/Angular_weight.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
@@ -130,6 +131,60 @@ TEST_CASE("STL corners are welded", "[input]")
   load_and_measure(write_temp("two.stl", stl), g);
   CHECK(g.number_of_faces() == 2);
   CHECK(g.number_of_edges() == 1);
+}
+
+TEST_CASE("a triangle soup from arrays is repaired as a file is", "[input]")
+{
+  // the elephant as arrays, every triangle with its own corners (an
+  // unwelded soup), then a degenerate triangle and a repeat
+  Mesh from_file;
+  const IO::Mesh_file_report fr = IO::read_mesh_file(SPECTRALSEG_SOURCE_DIR "/data/elephant.off", from_file);
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for(auto f : faces(from_file))
+  {
+    std::array<std::size_t, 3> t;
+    std::size_t i = 0;
+    for(auto v : vertices_around_face(halfedge(f, from_file), from_file))
+    {
+      const auto& p = from_file.point(v);
+      points.push_back({p.x(), p.y(), p.z()});
+      t[i++] = points.size() - 1;
+    }
+    triangles.push_back(t);
+  }
+  const std::size_t n = triangles.size();
+  triangles.push_back({0, 0, 1});
+  triangles.push_back(triangles[5]);
+  Mesh from_soup;
+  const IO::Mesh_file_report sr = IO::triangle_soup_to_mesh(points, triangles, from_soup);
+  CHECK(sr.path.empty());
+  CHECK(sr.input_faces == n + 2);
+  CHECK(sr.merged_vertices == points.size() - num_vertices(from_file));
+  CHECK(sr.invalid_faces == 1);
+  CHECK(sr.duplicate_faces == 1);
+  CHECK(sr.closed == fr.closed);
+  REQUIRE(num_faces(from_soup) == n);
+  CHECK(sr.face_of_input_face[n] == IO::Mesh_file_report::no_face);
+  CHECK(sr.face_of_input_face[n + 1] == sr.face_of_input_face[5]);
+  // same faces, same places, same orientation
+  const Dual_graph a = make_dual_graph(from_file), b = make_dual_graph(from_soup);
+  REQUIRE(a.number_of_edges() == b.number_of_edges());
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    CHECK((a.geometry().centroids[f] - b.geometry().centroids[f]).norm() < 1e-12);
+    CHECK((a.geometry().normals[f] - b.geometry().normals[f]).norm() < 1e-12);
+  }
+
+  Mesh m;
+  std::vector<std::array<double, 3>> bad = points;
+  bad[4][1] = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(IO::triangle_soup_to_mesh(bad, triangles, m), Catch::Contains("vertex 4 has a non-finite"));
+  std::vector<std::array<std::size_t, 3>> outside = triangles;
+  outside[7][2] = points.size();
+  CHECK_THROWS_WITH(IO::triangle_soup_to_mesh(points, outside, m), Catch::Contains("triangle 7 has vertex index"));
+  CHECK_THROWS_WITH(IO::triangle_soup_to_mesh(points, {}, m), Catch::Contains("no face"));
+  CHECK_THROWS_AS(IO::triangle_soup_to_mesh(points, {{0, 0, 1}}, m), Invalid_input);
 }
 
 TEST_CASE("every shared test mesh is read and measured, or rejected with a message", "[input][shared]")

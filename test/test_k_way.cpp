@@ -7,6 +7,7 @@
 #include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
+#include <SpectralSeg/Refinement/graph_cut_boost_backends.h>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/k_way_segmentation.h>
 #include <SpectralSeg/segment_hybrid.h>

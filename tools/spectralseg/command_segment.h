@@ -15,6 +15,7 @@
 #include <SpectralSeg/Rendering/render_mesh_geometry.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
+#include <SpectralSeg/Refinement/graph_cut_boost_backends.h> // --graph-cut-backend boost-csr, boost-list
 #include <SpectralSeg/k_way_segmentation.h>
 
 #include <CLI/CLI.hpp>

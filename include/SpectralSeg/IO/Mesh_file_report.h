@@ -19,7 +19,7 @@ struct Mesh_file_report
   /// marks an input face that has no mesh face (an invalid face)
   static constexpr std::size_t no_face = static_cast<std::size_t>(-1);
 
-  std::string path;                       ///< the file read
+  std::string path;                       ///< the file read (empty for `triangle_soup_to_mesh()`)
   std::size_t input_vertices = 0;         ///< vertices in the file
   std::size_t input_faces = 0;            ///< faces (polygons) in the file
   std::size_t merged_vertices = 0;        ///< vertices merged with an identical one

@@ -6,66 +6,17 @@
 #define SPECTRALSEG_IO_READ_MESH_FILE_H
 
 #include <SpectralSeg/IO/Mesh_file_report.h>
-#include <SpectralSeg/IO/internal/Polygon_soup.h>
-#include <SpectralSeg/IO/internal/read_obj.h>
-#include <SpectralSeg/IO/internal/read_off.h>
-#include <SpectralSeg/IO/internal/read_ply.h>
-#include <SpectralSeg/IO/internal/read_stl.h>
-#include <SpectralSeg/IO/internal/repair_polygon_soup.h>
+#include <SpectralSeg/IO/internal/read_polygon_soup.h>
+#include <SpectralSeg/IO/internal/triangulate_polygon.h>
+#include <SpectralSeg/IO/triangle_soup_to_mesh.h>
 #include <SpectralSeg/exceptions.h>
 
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/helpers.h>
 
-#include <algorithm>
-#include <cctype>
 #include <string>
-#include <vector>
 
 namespace SpectralSeg {
 namespace IO {
-
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-inline std::string lowercase_extension(const std::string& path)
-{
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of("/\\");
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return std::string();
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
-// The points and faces of a file, as the file gives them, by format.
-inline Polygon_soup read_polygon_soup(const std::string& path)
-{
-  const std::string ext = lowercase_extension(path);
-  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
-  {
-    const File_bytes probe = read_file_bytes(path); // a missing file says so first
-    throw Io_error("'" + path + "': unknown mesh format '" + ext + "' (use .off, .obj, .ply or .stl)");
-  }
-  const File_bytes file = read_file_bytes(path);
-  Polygon_soup soup;
-  if(ext == "off")
-    read_off(file, soup);
-  else if(ext == "obj")
-    read_obj(file, soup);
-  else if(ext == "ply")
-    read_ply(file, soup);
-  else
-    read_stl(file, soup);
-  return soup;
-}
-
-} // namespace internal
-/// \endcond
 
 /// \ingroup PkgSpectralSegIO
 /// \brief Reads a mesh file (OFF, OBJ, PLY or STL, by extension, in any
@@ -115,71 +66,11 @@ inline Polygon_soup read_polygon_soup(const std::string& path)
 template <typename Point>
 Mesh_file_report read_mesh_file(const std::string& path, CGAL::Surface_mesh<Point>& mesh)
 {
-  Mesh_file_report report;
-  report.path = path;
   mesh.clear();
-
   internal::Polygon_soup soup = internal::read_polygon_soup(path);
-  report.input_vertices = soup.points.size();
-  report.input_faces = soup.number_of_faces();
-  report.ignored_elements = soup.ignored_elements;
-  if(soup.number_of_faces() == 0)
-    throw Invalid_input("'" + path + "' holds no face");
-
-  const std::vector<std::size_t> weld = internal::weld_identical_vertices(soup.points);
-  report.merged_vertices = report.input_vertices - soup.points.size();
-  internal::Clean_triangles clean = internal::clean_and_triangulate_faces<Point>(soup, weld, report);
-  if(clean.triangles.empty())
-    throw Invalid_input("'" + path + "' holds no usable face (every face has fewer than three distinct vertices)");
-  const std::size_t distinct = report.input_faces - report.invalid_faces - report.duplicate_faces;
-  if(report.duplicate_faces > distinct)
-    throw Invalid_input("'" + path + "': " + std::to_string(report.duplicate_faces) + " of its " +
-                        std::to_string(report.input_faces) + " faces repeat another face, leaving only " +
-                        std::to_string(distinct) +
-                        " distinct faces: the file is mostly copies of the same faces, not a surface");
-  // an oriented manifold soup (the usual file) has no non-manifold edge and
-  // needs no orientation pass
-  const bool oriented_manifold = internal::is_oriented_manifold_soup(soup.points.size(), clean.triangles);
-  report.non_manifold_edges = oriented_manifold ? 0 : internal::count_non_manifold_edges(clean.triangles);
-
-  std::vector<Point> points;
-  points.reserve(soup.points.size());
-  for(const auto& p : soup.points)
-    points.push_back(Point(p[0], p[1], p[2]));
-  std::vector<std::array<std::size_t, 3>>& triangles = clean.triangles;
-  const std::size_t points_before = points.size();
-  if(!oriented_manifold)
-    CGAL::Polygon_mesh_processing::orient_polygon_soup(points, triangles);
-  report.split_vertices = points.size() - points_before;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
-  if(num_faces(mesh) != triangles.size())
-    throw Invalid_input("'" + path + "': the faces could not be assembled into a mesh");
-
-  // Surface_mesh numbers faces in insertion order: triangle t is face t.
-  report.face_of_input_face.assign(report.input_faces, Mesh_file_report::no_face);
-  for(std::size_t p = 0; p < report.input_faces; ++p)
-  {
-    if(clean.first_triangle[p] != Mesh_file_report::no_face)
-      report.face_of_input_face[p] = clean.first_triangle[p];
-    else if(clean.duplicate_of[p] != Mesh_file_report::no_face)
-      report.face_of_input_face[p] = clean.first_triangle[clean.duplicate_of[p]];
-  }
-  report.input_face_of_face = std::move(clean.input_face_of_triangle);
-
-  report.closed = CGAL::is_closed(mesh);
-  if(report.closed)
-  {
-    try
-    {
-      CGAL::Polygon_mesh_processing::orient(mesh, CGAL::parameters::outward_orientation(true));
-    }
-    catch(const CGAL::Failure_exception&)
-    {
-      report.warnings.push_back("could not orient the closed mesh outward (degenerate geometry); "
-                                "the file's orientation is kept");
-    }
-  }
-  report.finish();
+  Mesh_file_report report =
+    internal::polygon_soup_to_mesh(soup, "'" + path + "'", mesh, &internal::triangulate_polygon<Point>);
+  report.path = path;
   return report;
 }
 

@@ -11,7 +11,10 @@
 #include <SpectralSeg/Refinement/internal/alpha_expansion.h>
 #include <SpectralSeg/exceptions.h>
 
-#include <CGAL/boost/graph/alpha_expansion_graphcut.h> // the max-flow implementations
+// The max-flow implementations: Kolmogorov's MaxFlow (the default) here;
+// Boost's two, which are instantiated only when asked for, in
+// graph_cut_boost_backends.h (included at the end of this file when
+// MaxFlow is not available, since one of them is then the default).
 #ifdef SPECTRALSEG_USE_MAXFLOW
 #include <CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h>
 #endif
@@ -27,11 +30,21 @@ namespace Refinement {
 
 /// \ingroup PkgSpectralSegRefinement
 /// \brief The max-flow implementation used by the alpha expansion.
+///
+/// The two Boost backends are compiled only in programs that include
+/// `<SpectralSeg/Refinement/graph_cut_boost_backends.h>` (or that do not
+/// define `SPECTRALSEG_USE_MAXFLOW`, where the Boost one on compressed
+/// sparse rows is the default); `graph_cut_boundaries()` throws
+/// `Invalid_input` for them otherwise. This keeps their compile time and
+/// GCC's `-Wmaybe-uninitialized` false positives in Boost's
+/// `boykov_kolmogorov_max_flow.hpp` out of programs that do not use them.
 enum class Graph_cut_backend
 {
-  /// Boost's Boykov-Kolmogorov max-flow on an adjacency list (CGAL's default)
+  /// Boost's Boykov-Kolmogorov max-flow on an adjacency list (CGAL's
+  /// default; needs `graph_cut_boost_backends.h`)
   boost_adjacency_list,
-  /// the same on a compressed sparse row graph (faster to build)
+  /// the same on a compressed sparse row graph (faster to build; needs
+  /// `graph_cut_boost_backends.h` when `SPECTRALSEG_USE_MAXFLOW` is defined)
   boost_compressed_sparse_row,
   /// Kolmogorov's MaxFlow code shipped with CGAL's Surface_mesh_segmentation
   /// (GPL); available when `SPECTRALSEG_USE_MAXFLOW` is defined before
@@ -67,6 +80,36 @@ struct Graph_cut_options
   Graph_cut_backend backend = Graph_cut_backend::boost_compressed_sparse_row;
 #endif
 };
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// A Boost max-flow backend: runs the alpha expansion of `problem` from `l`.
+typedef void (*Boost_max_flow_backend)(const Potts_problem& problem, std::vector<std::size_t>& l);
+
+// The Boost backends, registered by graph_cut_boost_backends.h when a
+// program includes it (null otherwise): [0] adjacency list, [1] compressed
+// sparse rows. A function-local static, so that every translation unit
+// sees the same table and no inline function depends on what was included.
+inline Boost_max_flow_backend* boost_max_flow_backends()
+{
+  static Boost_max_flow_backend table[2] = {nullptr, nullptr};
+  return table;
+}
+
+inline void run_boost_max_flow_backend(Graph_cut_backend backend, const Potts_problem& problem,
+                                       std::vector<std::size_t>& l)
+{
+  const Boost_max_flow_backend run =
+    boost_max_flow_backends()[backend == Graph_cut_backend::boost_adjacency_list ? 0 : 1];
+  if(run == nullptr)
+    throw Invalid_input("graph cut: the Boost max-flow backends need "
+                        "#include <SpectralSeg/Refinement/graph_cut_boost_backends.h> in the program");
+  run(problem, l);
+}
+
+} // namespace internal
+/// \endcond
 
 /// \ingroup PkgSpectralSegRefinement
 /// \brief Relabels the faces by minimising
@@ -188,27 +231,25 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   std::vector<std::size_t> l(problem.vertices);
   for(std::size_t v = 0; v < problem.vertices; ++v)
     l[v] = std::size_t(labels[face_of_variable[v]]);
-  switch(options.backend)
+  if(options.backend == Graph_cut_backend::maxflow)
   {
-  case Graph_cut_backend::boost_adjacency_list:
-    internal::alpha_expansion<CGAL::Alpha_expansion_boost_adjacency_list_impl>(problem, l);
-    break;
-  case Graph_cut_backend::maxflow:
 #ifdef SPECTRALSEG_USE_MAXFLOW
     internal::alpha_expansion<CGAL::Alpha_expansion_MaxFlow_impl>(problem, l);
-    break;
 #else
     throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code from CGAL)");
 #endif
-  case Graph_cut_backend::boost_compressed_sparse_row:
-    internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(problem, l);
-    break;
   }
+  else
+    internal::run_boost_max_flow_backend(options.backend, problem, l);
   for(std::size_t v = 0; v < problem.vertices; ++v)
     labels[face_of_variable[v]] = static_cast<int>(l[v]);
 }
 
 } // namespace Refinement
 } // namespace SpectralSeg
+
+#ifndef SPECTRALSEG_USE_MAXFLOW
+#include <SpectralSeg/Refinement/graph_cut_boost_backends.h> // the default backend
+#endif
 
 #endif

@@ -1,17 +1,15 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 /// \file repair_polygon_soup.h
-/// \brief The repairs of `read_mesh_file()`, one function per step: welding
-/// identical vertices, cleaning, deduplicating and triangulating faces,
-/// counting non-manifold edges.
+/// \brief The repairs of `read_mesh_file()` and `triangle_soup_to_mesh()`,
+/// one function per step: welding identical vertices, cleaning,
+/// deduplicating and triangulating faces, counting non-manifold edges.
 #ifndef SPECTRALSEG_IO_INTERNAL_REPAIR_POLYGON_SOUP_H
 #define SPECTRALSEG_IO_INTERNAL_REPAIR_POLYGON_SOUP_H
 
 #include <SpectralSeg/IO/Mesh_file_report.h>
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
 #include <SpectralSeg/exceptions.h>
-
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <algorithm>
 #include <array>
@@ -58,32 +56,6 @@ inline std::vector<std::size_t> weld_identical_vertices(std::vector<std::array<d
   return weld;
 }
 
-// Triangulates one polygon (given by positions) with CGAL's minimum-area
-// polyline triangulation; falls back to a fan if that fails.
-template <typename Point>
-std::vector<std::array<std::size_t, 3>> triangulate_polygon(const std::vector<Point>& polygon)
-{
-  std::vector<std::array<std::size_t, 3>> out;
-  std::vector<CGAL::Triple<int, int, int>> triples;
-  try
-  {
-    CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polygon, std::back_inserter(triples));
-  }
-  catch(const CGAL::Failure_exception&)
-  {
-    triples.clear();
-  }
-  if(triples.size() + 2 == polygon.size())
-  {
-    for(const auto& t : triples)
-      out.push_back({std::size_t(t.first), std::size_t(t.second), std::size_t(t.third)});
-    return out;
-  }
-  for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
-    out.push_back({0, i, i + 1});
-  return out;
-}
-
 // The triangles of the cleaned soup and where each face of the file went.
 struct Clean_triangles
 {
@@ -95,10 +67,12 @@ struct Clean_triangles
 
 // Maps faces to welded vertices, drops faces with fewer than three
 // distinct vertices and repeats of an earlier face's vertex set, and
-// triangulates polygons; counts each in `report`.
-template <typename Point>
+// triangulates polygons with `triangulate` (a polygon's positions, as
+// `Point`s, to triangles of indices into them: triangulate_polygon() of
+// triangulate_polygon.h); counts each in `report`.
+template <typename Point, typename Triangulate>
 Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std::vector<std::size_t>& weld,
-                                            Mesh_file_report& report)
+                                            Mesh_file_report& report, const Triangulate& triangulate)
 {
   const std::size_t faces = soup.number_of_faces();
   Clean_triangles out;
@@ -199,7 +173,7 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
     std::vector<Point> positions;
     for(std::size_t v : poly)
       positions.push_back(Point(soup.points[v][0], soup.points[v][1], soup.points[v][2]));
-    for(const auto& t : triangulate_polygon(positions))
+    for(const auto& t : triangulate(positions))
     {
       ++report.triangles_from_polygons;
       out.triangles.push_back({poly[t[0]], poly[t[1]], poly[t[2]]});

@@ -1,0 +1,357 @@
+# Copyright (c) 2026 SpectralSeg developers.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Tests of the spectralseg Python module (plain unittest, system python3 + numpy).
+
+Run by CTest (test `python_module`) as
+    PYTHONPATH=build/python SPECTRALSEG_CLI=build/tools/spectralseg \
+        SPECTRALSEG_DATA=data /usr/bin/python3 -m unittest -v test_spectralseg
+from test/python. Without SPECTRALSEG_CLI the comparisons with the
+command-line tool are skipped.
+"""
+import os
+import signal
+import subprocess
+import tempfile
+import threading
+import time
+import unittest
+
+import numpy as np
+
+import spectralseg
+
+DATA = os.environ.get("SPECTRALSEG_DATA", os.path.join(os.path.dirname(__file__), "..", "..", "data"))
+CLI = os.environ.get("SPECTRALSEG_CLI", "")
+ELEPHANT = os.path.join(DATA, "elephant.off")
+HUMAN = os.path.join(DATA, "human_man.off")
+
+
+def cli_values(args, kind, dtype):
+    """Runs `spectralseg KIND MESH ARGS --labels/--field FILE`, returns the file's values."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "out.txt")
+        flag = "--labels" if kind == "segment" else "--field"
+        subprocess.run([CLI, kind] + args + [flag, out], check=True, stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL)
+        return np.loadtxt(out, dtype=dtype)
+
+
+class Mesh:
+    """The elephant (5,558 faces), read once."""
+    vertices = None
+    faces = None
+
+    @classmethod
+    def get(cls):
+        if cls.vertices is None:
+            cls.vertices, cls.faces = spectralseg.read_mesh(ELEPHANT)
+        return cls.vertices, cls.faces
+
+
+class ReadMesh(unittest.TestCase):
+    def test_read_mesh(self):
+        v, f = spectralseg.read_mesh(ELEPHANT)
+        self.assertEqual(v.dtype, np.float64)
+        self.assertEqual(f.dtype, np.int64)
+        self.assertEqual(v.shape, (2775, 3))
+        self.assertEqual(f.shape, (5558, 3))
+        self.assertTrue(np.isfinite(v).all())
+        self.assertEqual(f.min(), 0)
+        self.assertEqual(f.max(), len(v) - 1)
+
+    def test_missing_file_is_an_os_error(self):
+        with self.assertRaises(OSError) as e:
+            spectralseg.read_mesh(os.path.join(DATA, "no_such_mesh.off"))
+        self.assertIsInstance(e.exception, spectralseg.IoError)
+        self.assertIsInstance(e.exception, spectralseg.Error)
+
+    def test_polygons_are_refused(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "quad.off")
+            with open(path, "w") as out:
+                out.write("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+            with self.assertRaisesRegex(ValueError, "face 0 has 4 vertices"):
+                spectralseg.read_mesh(path)
+
+
+class KWay(unittest.TestCase):
+    def test_k_labels(self):
+        v, f = Mesh.get()
+        labels = spectralseg.k_way_segmentation(v, f, 6)
+        self.assertEqual(labels.shape, (len(f),))
+        self.assertEqual(labels.dtype, np.int64)
+        self.assertEqual(sorted(set(labels.tolist())), list(range(6)))
+
+    def test_report(self):
+        v, f = Mesh.get()
+        labels, report = spectralseg.k_way_segmentation(v, f, 4, report=True, threads=2)
+        self.assertEqual(report["segments"], 4)
+        self.assertEqual(report["k"], 4)
+        self.assertEqual(report["faces"], len(f))
+        self.assertEqual(report["threads"], 2)
+        self.assertEqual(report["metric"], "part-aware")
+        self.assertEqual(report["embedding"], "nystrom")
+        self.assertIn("metric", report["timings"])
+        self.assertIn("graph cut", report["timings"])
+        self.assertGreater(report["timings"]["total"], 0)
+        self.assertEqual(sum(s["faces"] for s in report["segment_list"]), len(f))
+        self.assertEqual(report["warnings"], [])
+
+    def test_threads_do_not_change_labels(self):
+        v, f = Mesh.get()
+        one = spectralseg.k_way_segmentation(v, f, 5, threads=1)
+        two = spectralseg.k_way_segmentation(v, f, 5, threads=2)
+        np.testing.assert_array_equal(one, two)
+
+    def test_options_are_used(self):
+        v, f = Mesh.get()
+        default = spectralseg.k_way_segmentation(v, f, 5)
+        thesis = spectralseg.k_way_segmentation(v, f, 5, extra_clusters=0, normalization="max")
+        geodesic = spectralseg.k_way_segmentation(v, f, 5, metric="geodesic", boundary_enhancement=False)
+        self.assertFalse(np.array_equal(default, thesis))
+        self.assertFalse(np.array_equal(default, geodesic))
+        for labels in (thesis, geodesic):
+            self.assertEqual(len(set(labels.tolist())), 5)
+
+    def test_automatic_k(self):
+        v, f = Mesh.get()
+        labels, report = spectralseg.k_way_segmentation_automatic(v, f, max_k=12, report=True)
+        n = len(set(labels.tolist()))
+        self.assertTrue(2 <= n <= 12, n)
+        self.assertEqual(report["segments"], n)
+        self.assertEqual(report["method"], "concave-merge")
+
+
+class Automatic(unittest.TestCase):
+    def test_methods(self):
+        v, f = Mesh.get()
+        concave = spectralseg.automatic_segmentation(v, f, method="concave_merge")
+        np.testing.assert_array_equal(concave, spectralseg.k_way_segmentation_automatic(v, f))
+        for method in ("contrast_merge", "concave-merge", "salient_cuts"):
+            labels, report = spectralseg.automatic_segmentation(v, f, method=method, report=True)
+            n = len(set(labels.tolist()))
+            self.assertGreaterEqual(n, 2, method)
+            self.assertEqual(report["segments"], n)
+            self.assertEqual(report["method"], method.replace("_", "-"))
+
+    def test_salient_cuts_hierarchy_and_options(self):
+        v, f = Mesh.get()
+        labels, report = spectralseg.automatic_segmentation(v, f, method="salient_cuts", report=True)
+        self.assertEqual(report["parts_found"], len(set(labels.tolist())))
+        root = report["hierarchy"][0]
+        self.assertEqual(root["faces"], len(f))
+        self.assertIn("children", root)
+        three = spectralseg.automatic_segmentation(v, f, method="salient_cuts", parts=3)
+        self.assertEqual(len(set(three.tolist())), 3)
+        one = spectralseg.automatic_segmentation(v, f, method="salient_cuts", depth=0)
+        self.assertEqual(set(one.tolist()), {0})
+        strict = spectralseg.automatic_segmentation(v, f, method="salient_cuts", eta=0.9)
+        self.assertLessEqual(len(set(strict.tolist())), len(set(labels.tolist())))
+
+
+class Distances(unittest.TestCase):
+    def test_distances(self):
+        v, f = Mesh.get()
+        d = spectralseg.face_distances(v, f, 10)
+        self.assertEqual(d.shape, (len(f),))
+        self.assertEqual(d[10], 0.0)
+        self.assertTrue((d[np.arange(len(f)) != 10] > 0).all())
+        g = spectralseg.face_distances(v, f, 10, metric="geodesic")
+        self.assertFalse(np.allclose(d, g))
+
+    def test_nearest_source(self):
+        v, f = Mesh.get()
+        d, nearest = spectralseg.face_distances(v, f, [10, 3000], return_nearest=True)
+        self.assertEqual(nearest[10], 0)
+        self.assertEqual(nearest[3000], 1)
+        self.assertEqual(set(nearest.tolist()), {0, 1})
+        one = spectralseg.face_distances(v, f, 10)
+        np.testing.assert_array_equal(d[nearest == 0], one[nearest == 0])
+
+
+@unittest.skipUnless(CLI and os.path.exists(CLI), "SPECTRALSEG_CLI not set: no command-line tool to compare with")
+class SameAsCommandLine(unittest.TestCase):
+    """Labels equal, line for line, the labels file of `spectralseg segment` with the same options."""
+
+    def check(self, python_labels, cli_args):
+        expected = cli_values([ELEPHANT] + cli_args, "segment", np.int64)
+        np.testing.assert_array_equal(python_labels, expected)
+
+    def test_k_way(self):
+        v, f = Mesh.get()
+        self.check(spectralseg.k_way_segmentation(v, f, 6), ["--k", "6"])
+
+    def test_k_way_options(self):
+        v, f = Mesh.get()
+        labels = spectralseg.k_way_segmentation(v, f, 4, ray_caster="aabb", kernel="gaussian", sampling="gamma",
+                                                samples=12, seed=3, extra_clusters=0)
+        self.check(labels, ["--k", "4", "--ray-caster", "aabb", "--kernel", "gaussian", "--sampling", "gamma",
+                            "--samples", "12", "--seed", "3", "--extra-clusters", "0"])
+
+    def test_automatic(self):
+        v, f = Mesh.get()
+        self.check(spectralseg.automatic_segmentation(v, f), ["--k", "auto"])
+        self.check(spectralseg.automatic_segmentation(v, f, method="salient_cuts"),
+                   ["--k", "auto", "--auto-method", "salient-cuts"])
+
+    def test_distances(self):
+        v, f = Mesh.get()
+        expected = cli_values([ELEPHANT, "--from", "10"], "distance", np.float64)
+        np.testing.assert_array_equal(spectralseg.face_distances(v, f, 10), expected)
+
+
+class MessySoup(unittest.TestCase):
+    def test_unwelded_soup_equals_welded_mesh(self):
+        v, f = Mesh.get()
+        # every triangle with its own three vertices, as STL files and game exports store them
+        soup_v = v[f.reshape(-1)]
+        soup_f = np.arange(3 * len(f)).reshape(-1, 3)
+        labels, report = spectralseg.k_way_segmentation(soup_v, soup_f, 5, report=True)
+        np.testing.assert_array_equal(labels, spectralseg.k_way_segmentation(v, f, 5))
+        self.assertEqual(report["repairs"]["merged_vertices"], len(soup_v) - len(v))
+        self.assertTrue(any("merged" in w for w in report["warnings"]))
+
+    def test_dropped_and_duplicate_faces(self):
+        v, f = Mesh.get()
+        messy = np.vstack([f, [[0, 0, 1]], f[:2]])  # a degenerate face and two repeats
+        labels = spectralseg.k_way_segmentation(v, messy, 5)
+        clean = spectralseg.k_way_segmentation(v, f, 5)
+        np.testing.assert_array_equal(labels[:len(f)], clean)
+        self.assertEqual(labels[len(f)], -1)
+        np.testing.assert_array_equal(labels[len(f) + 1:], clean[:2])
+        d = spectralseg.face_distances(v, messy, 0)
+        self.assertTrue(np.isnan(d[len(f)]))
+
+    def test_other_dtypes(self):
+        v, f = Mesh.get()
+        expected = spectralseg.k_way_segmentation(v, f, 3)
+        np.testing.assert_array_equal(
+            spectralseg.k_way_segmentation(v.astype(np.float32).astype(np.float64), f.astype(np.uint32), 3), expected)
+        np.testing.assert_array_equal(spectralseg.k_way_segmentation(v.tolist(), f.tolist(), 3), expected)
+        np.testing.assert_array_equal(spectralseg.k_way_segmentation(np.asfortranarray(v), f[:, :], 3), expected)
+
+
+class Errors(unittest.TestCase):
+    def assertInvalid(self, regex, function, *args, **kwargs):
+        with self.assertRaisesRegex(ValueError, regex) as e:
+            function(*args, **kwargs)
+        self.assertIsInstance(e.exception, spectralseg.InvalidInputError)
+        self.assertIsInstance(e.exception, spectralseg.Error)
+        self.assertIsInstance(e.exception, RuntimeError)
+
+    def test_bad_arrays(self):
+        v, f = Mesh.get()
+        seg = spectralseg.k_way_segmentation
+        self.assertInvalid(r"vertices must be an \(n, 3\) array", seg, v[:, :2], f, 3)
+        self.assertInvalid(r"vertices must be an \(n, 3\) array", seg, v.reshape(-1), f, 3)
+        self.assertInvalid(r"vertices must be an \(n, 3\) array", seg, np.array(["a", "b", "c"]).reshape(1, 3), f, 3)
+        self.assertInvalid(r"faces must be an \(m, 3\) array", seg, v, f[:, :2], 3)
+        self.assertInvalid(r"faces must be an \(m, 3\) array", seg, v, f.astype(np.float64), 3)
+        self.assertInvalid("faces is empty", seg, v, np.zeros((0, 3), dtype=np.int64), 3)
+        bad = v.copy()
+        bad[7, 1] = np.nan
+        self.assertInvalid("vertex 7 has a non-finite coordinate", seg, bad, f, 3)
+        bad[7, 1] = np.inf
+        self.assertInvalid("vertex 7 has a non-finite coordinate", seg, bad, f, 3)
+        out = f.copy()
+        out[12, 2] = len(v)
+        self.assertInvalid("face 12 has vertex index 2775", seg, v, out, 3)
+        out[12, 2] = -1
+        self.assertInvalid("face 12 has vertex index -1", seg, v, out, 3)
+        self.assertInvalid("no usable face", seg, v, np.array([[0, 0, 1], [2, 2, 2]]), 1)
+
+    def test_bad_options(self):
+        v, f = Mesh.get()
+        seg = spectralseg.k_way_segmentation
+        self.assertInvalid(r"k must be an integer in \[1", seg, v, f, 0)
+        self.assertInvalid("larger than the number of faces", seg, v, f[:10], 11)
+        self.assertInvalid("metric must be one of", seg, v, f, 3, metric="euclidean")
+        self.assertInvalid("sampling must be one of", seg, v, f, 3, sampling="random")
+        self.assertInvalid("threads must be", seg, v, f, 3, threads=-1)
+        self.assertInvalid("weights must hold 2 or 3", seg, v, f, 3, weights=[1.0])
+        self.assertInvalid("weights must not all be 0", seg, v, f, 3, weights=[0, 0, 0])
+        self.assertInvalid("method must be one of", spectralseg.automatic_segmentation, v, f, method="magic")
+        self.assertInvalid("eta must be", spectralseg.automatic_segmentation, v, f, method="salient_cuts",
+                           eta=float("nan"))
+        self.assertInvalid("source face 99999 does not exist", spectralseg.face_distances, v, f, 99999)
+        self.assertInvalid("sources must be", spectralseg.face_distances, v, f, [])
+        if not spectralseg.has_embree:
+            self.assertInvalid("not available", seg, v, f, 3, ray_caster="embree")
+        with self.assertRaises(TypeError):
+            seg(v, f, 2.5)
+        with self.assertRaises(TypeError):
+            seg(v, f, 3, 1)  # options are keyword-only
+
+
+class Progress(unittest.TestCase):
+    def test_progress_is_reported(self):
+        v, f = Mesh.get()
+        seen = []
+        spectralseg.k_way_segmentation(v, f, 3, progress=lambda stage, fraction: seen.append((stage, fraction)))
+        self.assertTrue(seen)
+        self.assertTrue(all(0.0 <= fraction <= 1.0 for _, fraction in seen))
+
+    def test_cancel(self):
+        v, f = Mesh.get()
+        with self.assertRaises(spectralseg.CancelledError):
+            spectralseg.k_way_segmentation(v, f, 3, progress=lambda stage, fraction: False)
+
+    def test_exception_in_callback_propagates(self):
+        v, f = Mesh.get()
+
+        def fail(stage, fraction):
+            raise ZeroDivisionError("from the callback")
+
+        with self.assertRaisesRegex(ZeroDivisionError, "from the callback"):
+            spectralseg.automatic_segmentation(v, f, progress=fail)
+        # the module still works afterwards
+        self.assertEqual(len(set(spectralseg.k_way_segmentation(v, f, 2).tolist())), 2)
+
+
+class Gil(unittest.TestCase):
+    def test_gil_is_released(self):
+        """A Python thread keeps ticking while a segmentation runs."""
+        v, f = spectralseg.read_mesh(HUMAN)
+        ticks = []
+        stop = threading.Event()
+
+        def tick():
+            while not stop.is_set():
+                ticks.append(time.perf_counter())
+                time.sleep(0.001)
+
+        thread = threading.Thread(target=tick)
+        thread.start()
+        try:
+            time.sleep(0.05)
+            start = time.perf_counter()
+            spectralseg.k_way_segmentation(v, f, 6, threads=1)
+            end = time.perf_counter()
+        finally:
+            stop.set()
+            thread.join()
+        inside = [t for t in ticks if start <= t <= end]
+        # with the GIL held the thread could not tick at all during the call
+        self.assertGreaterEqual(len(inside), 5, "%d ticks in %.3f s" % (len(inside), end - start))
+        stamps = [start] + inside + [end]
+        longest_gap = max(b - a for a, b in zip(stamps, stamps[1:]))
+        self.assertLess(longest_gap, 0.5 * (end - start) + 0.05)
+
+    @unittest.skipUnless(hasattr(signal, "SIGINT"), "no SIGINT")
+    def test_ctrl_c_interrupts(self):
+        v, f = spectralseg.read_mesh(HUMAN)
+        finished = []
+        timer = threading.Timer(0.02, lambda: os.kill(os.getpid(), signal.SIGINT))
+        timer.start()
+        try:
+            with self.assertRaises(KeyboardInterrupt):
+                spectralseg.k_way_segmentation(v, f, 6, threads=1)
+                finished.append(True)
+                time.sleep(5)  # not reached unless the signal came late
+        finally:
+            timer.cancel()
+        self.assertEqual(finished, [], "the segmentation ran to its end before Ctrl-C was seen")
+
+
+if __name__ == "__main__":
+    unittest.main()
