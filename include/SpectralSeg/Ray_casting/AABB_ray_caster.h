@@ -98,6 +98,7 @@ public:
     return query.t;
   }
 
+  /// `first_hit()` for `count` rays from the same origin, skipping the same face
   void first_hits(const Eigen::Vector3d& origin, const Eigen::Vector3d* directions, std::size_t count,
                   size_type skip, double* distances) const
   {
