@@ -12,11 +12,11 @@
 #include <SpectralSeg/exceptions.h>
 
 // The max-flow implementations: Kolmogorov's MaxFlow (the default) here;
-// Boost's two, which are instantiated only when asked for, in
+// Boost's two, which are compiled only when asked for, in
 // graph_cut_boost_backends.h (included at the end of this file when
 // MaxFlow is not available, since one of them is then the default).
 #ifdef SPECTRALSEG_USE_MAXFLOW
-#include <CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h>
+#include <SpectralSeg/Refinement/internal/maxflow.h>
 #endif
 
 #include <Eigen/Core>
@@ -234,7 +234,7 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   if(options.backend == Graph_cut_backend::maxflow)
   {
 #ifdef SPECTRALSEG_USE_MAXFLOW
-    internal::alpha_expansion<CGAL::Alpha_expansion_MaxFlow_impl>(problem, l);
+    internal::alpha_expansion<internal::Maxflow_impl>(problem, l);
 #else
     throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code from CGAL)");
 #endif
