@@ -6,6 +6,9 @@
 #   default sources: the README example, CGAL's SDF segmentation, and the
 #   Python module when it is configured. The build directory must be
 #   configured with -DCMAKE_EXPORT_COMPILE_COMMANDS=ON.
+#   SPECTRALSEG_INCLUDE_DIR=DIR compiles against the headers in DIR instead
+#   of the source tree's include/ (e.g. an older commit's, checked out with
+#   `git worktree add /tmp/before COMMIT`: DIR=/tmp/before/include).
 # Prints one table row per source: wall seconds, user+system CPU seconds,
 # peak resident memory (GNU time's "Maximum resident set size").
 set -euo pipefail
@@ -42,6 +45,9 @@ PY
   out=$(mktemp -d)
   # same command, object file redirected to a scratch directory
   cmd=$(sed -E "s# -o [^ ]+# -o $out/tu.o#" <<<"$cmd")
+  if [ -n "${SPECTRALSEG_INCLUDE_DIR:-}" ]; then
+    cmd=${cmd//-I$PWD\/include /-I$(realpath "$SPECTRALSEG_INCLUDE_DIR") }
+  fi
   (cd "$dir" && /usr/bin/time -v sh -c "$cmd" 2>"$out/time" >/dev/null) || { cat "$out/time" >&2; exit 1; }
   awk -v src="$src" -F': ' '
     /Elapsed \(wall clock\)/ { n = split($2, p, ":"); wall = (n == 3 ? p[1] * 3600 + p[2] * 60 + p[3] : p[1] * 60 + p[2]) }

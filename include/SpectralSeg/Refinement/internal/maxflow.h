@@ -18,9 +18,11 @@
 
 // As CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h does (the guards of
 // graph.h make the two compatible in one program).
+#ifndef DOXYGEN_RUNNING
 namespace MaxFlow {
 #include <CGAL/Surface_mesh_segmentation/internal/auxiliary/graph.h>
 }
+#endif
 
 namespace SpectralSeg {
 namespace Refinement {
