@@ -149,6 +149,16 @@ Soup soup_from_arrays(const py::object& vertices, const py::object& faces)
   return soup;
 }
 
+// The named parameters of make_dual_graph(): contact edges between parts
+// that touch, specks linked to the nearest part. The defaults are the
+// library's, which the CLI uses.
+struct Graph_options
+{
+  bool connect_touching_parts = true;
+  double contact_distance = 0.005;
+  double speck_area_fraction = 0.01;
+};
+
 // The mesh the library segments: the soup repaired as the CLI repairs a
 // file (welded, deduplicated, non-manifold edges split, oriented), its
 // report, and its dual graph. Built with the GIL released.
@@ -158,10 +168,12 @@ struct Input_mesh
   SpectralSeg::IO::Mesh_file_report report;
   SpectralSeg::Dual_graph graph;
 
-  explicit Input_mesh(const Soup& soup)
+  Input_mesh(const Soup& soup, const Graph_options& g)
   {
     report = SpectralSeg::IO::triangle_soup_to_mesh(soup.points, soup.triangles, mesh);
-    graph = SpectralSeg::make_dual_graph(mesh);
+    graph = SpectralSeg::make_dual_graph(mesh, SpectralSeg::parameters::connect_touching_parts(g.connect_touching_parts)
+                                                 .contact_distance(g.contact_distance)
+                                                 .speck_area_fraction(g.speck_area_fraction));
   }
 };
 
@@ -365,6 +377,15 @@ SpectralSeg::Metrics::Any_weight make_metric(const Metric_options& o)
   return vsi_metric<SpectralSeg::Ray_casting::AABB_ray_caster>(o);
 }
 
+Graph_options graph_options(bool connect_touching_parts, double contact_distance, double speck_area_fraction)
+{
+  Graph_options g;
+  g.connect_touching_parts = connect_touching_parts;
+  g.contact_distance = number("contact_distance", contact_distance, 0., 1.);
+  g.speck_area_fraction = number("speck_area_fraction", speck_area_fraction, 0., 1.);
+  return g;
+}
+
 struct K_way_settings
 {
   std::string kernel;
@@ -507,6 +528,14 @@ Common keyword arguments (the CLI's options of the same names):
     threads: 0 (default) for all hardware threads; the labels do not depend on it
     progress: None or a callable(stage: str, fraction: float); returning False cancels (CancelledError)
     report: if True, return (labels, report dict) instead of labels
+    connect_touching_parts: join parts that touch without sharing an edge by contact edges, and link
+        specks to the nearest part (SpectralSeg::make_dual_graph()), default True; False keeps only
+        the mesh edges, so that every separate piece is at least one segment (the thesis's graph)
+    contact_distance: how close vertices of different pieces must be to join them, as a fraction of
+        the bounding-box diagonal, in [0, 1], default 0.005
+    speck_area_fraction: pieces under this fraction of the area that touch nothing are linked to the
+        nearest part, in [0, 1] (0: none), default 0.01
+    (the last three are not options of the tool, which uses their defaults)
 )doc";
 
 py::object k_way_segmentation(const py::object& vertices, const py::object& faces, long long k, const std::string& metric,
@@ -514,9 +543,11 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
                               double vsi_fraction, const py::object& ray_caster, const std::string& kernel,
                               const std::string& sampling, long long samples, long long seed,
                               bool boundary_enhancement, long long extra_clusters, long long threads,
-                              const py::object& progress, bool report)
+                              const py::object& progress, bool report, bool connect_touching_parts,
+                              double contact_distance, double speck_area_fraction)
 {
   const Soup soup = soup_from_arrays(vertices, faces);
+  const Graph_options go = graph_options(connect_touching_parts, contact_distance, speck_area_fraction);
   const std::size_t kk = count("k", k, 1, 100000);
   const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, ray_caster);
   const K_way_settings ks = k_way_settings(kernel, sampling, samples, seed, boundary_enhancement, extra_clusters);
@@ -533,7 +564,7 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
   Out out = run_without_gil(bridge, t, [&](const SpectralSeg::Execution& exec) {
     Out o;
     Timer timer;
-    o.m = std::make_unique<Input_mesh>(soup);
+    o.m = std::make_unique<Input_mesh>(soup, go);
     timer.lap("read");
     const std::size_t n = o.m->graph.number_of_faces();
     if(kk > n)
@@ -596,9 +627,11 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
                      const std::string& metric, const std::vector<double>& weights, const std::string& normalization,
                      double vsi_fraction, const py::object& ray_caster, const std::string& kernel,
                      const std::string& sampling, long long samples, long long seed, bool boundary_enhancement,
-                     long long threads, const py::object& progress, bool report)
+                     long long threads, const py::object& progress, bool report, bool connect_touching_parts,
+                     double contact_distance, double speck_area_fraction)
 {
   const Soup soup = soup_from_arrays(vertices, faces);
+  const Graph_options go = graph_options(connect_touching_parts, contact_distance, speck_area_fraction);
   const std::string method = one_of("method", method_name, {"contrast-merge", "concave-merge", "salient-cuts"});
   const std::size_t max_clusters = count("max_k", max_k, 2, 100000);
   const double contrast =
@@ -629,7 +662,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
   Out out = run_without_gil(bridge, t, [&](const SpectralSeg::Execution& exec) {
     Out o;
     Timer timer;
-    o.m = std::make_unique<Input_mesh>(soup);
+    o.m = std::make_unique<Input_mesh>(soup, go);
     timer.lap("read");
     o.threads = exec.threads();
     const SpectralSeg::Dual_graph& graph = o.m->graph;
@@ -709,9 +742,11 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
 py::object face_distances(const py::object& vertices, const py::object& faces, const py::object& sources,
                           const std::string& metric, const std::vector<double>& weights,
                           const std::string& normalization, double vsi_fraction, const py::object& ray_caster,
-                          long long threads, const py::object& progress, bool return_nearest)
+                          long long threads, const py::object& progress, bool return_nearest,
+                          bool connect_touching_parts, double contact_distance, double speck_area_fraction)
 {
   const Soup soup = soup_from_arrays(vertices, faces);
+  const Graph_options go = graph_options(connect_touching_parts, contact_distance, speck_area_fraction);
   std::vector<long long> from;
   const py::array s = py::module_::import("numpy").attr("asarray")(sources);
   if(s.ndim() > 1 || (s.dtype().kind() != 'i' && s.dtype().kind() != 'u') || s.size() == 0)
@@ -729,7 +764,7 @@ py::object face_distances(const py::object& vertices, const py::object& faces, c
   };
   Out out = run_without_gil(bridge, t, [&](const SpectralSeg::Execution& exec) {
     Out o;
-    o.m = std::make_unique<Input_mesh>(soup);
+    o.m = std::make_unique<Input_mesh>(soup, go);
     const SpectralSeg::IO::Mesh_file_report& r = o.m->report;
     std::vector<SpectralSeg::Dual_graph::size_type> ids;
     for(long long f : from)
@@ -799,9 +834,11 @@ Vertices are an (n, 3) float array, faces an (m, 3) integer array of vertex
 indices (as numpy, trimesh, Open3D and libigl hold them). The soup is
 repaired as the spectralseg command-line tool repairs a file (identical
 vertices welded, duplicate and degenerate faces dropped, non-manifold edges
-split, closed meshes oriented outward); results have one entry per row of
-`faces`, -1 (labels) or nan (distances) for a dropped face. The GIL is
-released while computing; Ctrl-C interrupts.)doc";
+split, closed meshes oriented outward); pieces that touch without sharing
+an edge are joined, and specks linked to the nearest part, unless
+connect_touching_parts=False. Results have one entry per row of `faces`,
+-1 (labels) or nan (distances) for a dropped face. The GIL is released
+while computing; Ctrl-C interrupts.)doc";
   m.attr("__version__") = SPECTRALSEG_VERSION;
   m.attr("has_embree") = has_embree();
 
@@ -858,12 +895,15 @@ malformed file, InvalidInputError for a face that is not a triangle.)doc");
         py::arg("seed") = 0, py::arg("boundary_enhancement") = true,
         py::arg("extra_clusters") = static_cast<long long>(SpectralSeg::K_way_options().extra_clusters),
         py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("report") = false,
+        py::arg("connect_touching_parts") = true, py::arg("contact_distance") = 0.005,
+        py::arg("speck_area_fraction") = 0.01,
         (std::string(R"doc(k_way_segmentation(vertices, faces, k, **options) -> labels
 
 Segments the mesh into k parts by spectral clustering of the part-aware
 metric (SpectralSeg::segment_k_way(), `spectralseg segment --k K`).
 Returns one label per row of `faces`, in [0, segments), -1 for a dropped
-face; segments is k, more if the mesh has more connected components.
+face; segments is k, more if the mesh has pieces that stay apart (see
+connect_touching_parts).
 
 extra_clusters: K-means makes k + extra_clusters clusters, then the weakest
     boundaries are merged until k are left; 0 is the thesis's method (default 3)
@@ -875,10 +915,12 @@ extra_clusters: K-means makes k + extra_clusters clusters, then the weakest
            const std::string& metric, const std::vector<double>& weights, const std::string& normalization,
            double vsi_fraction, const py::object& ray_caster, const std::string& kernel, const std::string& sampling,
            long long samples, long long seed, bool boundary_enhancement, long long threads,
-           const py::object& progress, bool report) {
+           const py::object& progress, bool report, bool connect_touching_parts, double contact_distance,
+           double speck_area_fraction) {
           return automatic(vertices, faces, "concave-merge", max_k, min_boundary_contrast, 0.1, false, 0.02, 64,
                            py::none(), py::none(), metric, weights, normalization, vsi_fraction, ray_caster, kernel,
-                           sampling, samples, seed, boundary_enhancement, threads, progress, report);
+                           sampling, samples, seed, boundary_enhancement, threads, progress, report,
+                           connect_touching_parts, contact_distance, speck_area_fraction);
         },
         py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("max_k") = 20,
         py::arg("min_boundary_contrast") = py::none(), py::arg("metric") = "part-aware",
@@ -886,6 +928,8 @@ extra_clusters: K-means makes k + extra_clusters clusters, then the weakest
         py::arg("ray_caster") = py::none(), py::arg("kernel") = "exponential", py::arg("sampling") = "auto",
         py::arg("samples") = 0, py::arg("seed") = 0, py::arg("boundary_enhancement") = true, py::arg("threads") = 0,
         py::arg("progress") = py::none(), py::arg("report") = false,
+        py::arg("connect_touching_parts") = true, py::arg("contact_distance") = 0.005,
+        py::arg("speck_area_fraction") = 0.01,
         (std::string(R"doc(k_way_segmentation_automatic(vertices, faces, **options) -> labels
 
 Segments the mesh into a number of parts it chooses itself, between 2 and
@@ -910,6 +954,8 @@ min_boundary_contrast: merging stops once the weakest boundary's mean concave
         py::arg("kernel") = "exponential", py::arg("sampling") = "auto", py::arg("samples") = 0,
         py::arg("seed") = 0, py::arg("boundary_enhancement") = true, py::arg("threads") = 0,
         py::arg("progress") = py::none(), py::arg("report") = false,
+        py::arg("connect_touching_parts") = true, py::arg("contact_distance") = 0.005,
+        py::arg("speck_area_fraction") = 0.01,
         (std::string(R"doc(automatic_segmentation(vertices, faces, **options) -> labels
 
 Segments the mesh into as many parts as it finds (`spectralseg segment --k
@@ -940,6 +986,8 @@ With report=True, salient cuts add the hierarchy of cuts to the report.
         py::kw_only(), py::arg("metric") = "part-aware", py::arg("weights") = default_weights,
         py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01, py::arg("ray_caster") = py::none(),
         py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("return_nearest") = false,
+        py::arg("connect_touching_parts") = true, py::arg("contact_distance") = 0.005,
+        py::arg("speck_area_fraction") = 0.01,
         R"doc(face_distances(vertices, faces, sources, **options) -> distances
 
 Shortest-path distance, on the dual graph weighted by the metric, from the
@@ -951,5 +999,6 @@ source reaches, nan for a dropped face. With return_nearest=True, returns
 face's nearest source (-1 if none).
 
 Keyword arguments: metric, weights, normalization, vsi_fraction, ray_caster,
-threads and progress, as for k_way_segmentation().)doc");
+threads, progress, connect_touching_parts, contact_distance and
+speck_area_fraction, as for k_way_segmentation().)doc");
 }
