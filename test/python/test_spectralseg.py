@@ -231,6 +231,76 @@ class MessySoup(unittest.TestCase):
         np.testing.assert_array_equal(spectralseg.k_way_segmentation(np.asfortranarray(v), f[:, :], 3), expected)
 
 
+def cube(origin, size=1.0):
+    """An axis-aligned cube with its own 8 vertices and 12 outward triangles."""
+    corners = np.array([[x, y, z] for z in (0, 1) for y in (0, 1) for x in (0, 1)], dtype=np.float64)
+    faces = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+                      [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]])
+    return corners * size + np.asarray(origin, dtype=np.float64), faces
+
+
+def pieces(*cubes):
+    """One soup of separate cubes: faces 12 i to 12 i + 11 are cube i's."""
+    vertices, faces = zip(*cubes)
+    offsets = np.cumsum([0] + [len(v) for v in vertices[:-1]])
+    return np.vstack(vertices), np.vstack([f + o for f, o in zip(faces, offsets)])
+
+
+class TouchingPieces(unittest.TestCase):
+    """The dual graph's contact edges (connect_touching_parts, contact_distance, speck_area_fraction)."""
+    # two unit cubes side by side, 0.001 apart (0.0004 of the bounding-box
+    # diagonal, within the default contact distance 0.005): no shared vertex
+    v, f = pieces(cube((0, 0, 0)), cube((1.001, 0, 0)))
+    # the same and a cube of side 0.05 far above them: 0.1 % of the area
+    sv, sf = pieces(cube((0, 0, 0)), cube((1.001, 0, 0)), cube((0.5, 0.5, 3), 0.05))
+    apart = {"connect_touching_parts": False}
+    too_close_to_join = {"contact_distance": 1e-4}
+    by_cube = [0] * 12 + [1] * 12
+
+    def test_k_way(self):
+        seg = spectralseg.k_way_segmentation
+        self.assertEqual(seg(self.v, self.f, 1).tolist(), [0] * 24)
+        self.assertEqual(seg(self.v, self.f, 2).tolist(), self.by_cube)  # joined, then cut where they touch
+        self.assertEqual(seg(self.v, self.f, 1, **self.apart).tolist(), self.by_cube)
+        labels, report = seg(self.v, self.f, 1, report=True, **self.too_close_to_join)
+        self.assertEqual(labels.tolist(), self.by_cube)
+        self.assertEqual(report["segments"], 2)
+        self.assertEqual(seg(self.v, self.f, 1, contact_distance=1e-3).tolist(), [0] * 24)
+
+    def test_specks(self):
+        seg = spectralseg.k_way_segmentation
+        self.assertEqual(seg(self.sv, self.sf, 1).tolist(), [0] * 36)  # the speck joins the nearest cube
+        self.assertEqual(seg(self.sv, self.sf, 1, speck_area_fraction=0).tolist(), [0] * 24 + [1] * 12)
+        self.assertEqual(seg(self.sv, self.sf, 1, speck_area_fraction=0.0005).tolist(), [0] * 24 + [1] * 12)
+        self.assertEqual(seg(self.sv, self.sf, 1, **self.apart).tolist(), self.by_cube + [2] * 12)
+
+    def test_automatic(self):
+        auto = spectralseg.automatic_segmentation
+        # salient cuts at depth 0: one part per piece of the graph
+        self.assertEqual(auto(self.v, self.f, method="salient_cuts", depth=0).tolist(), [0] * 24)
+        for options in (self.apart, self.too_close_to_join):
+            self.assertEqual(auto(self.v, self.f, method="salient_cuts", depth=0, **options).tolist(), self.by_cube)
+        self.assertEqual(auto(self.sv, self.sf, method="salient_cuts", depth=0, speck_area_fraction=0).tolist(),
+                         [0] * 24 + [1] * 12)
+        joined = spectralseg.k_way_segmentation_automatic(self.v, self.f)
+        apart = spectralseg.k_way_segmentation_automatic(self.v, self.f, **self.apart)
+        self.assertFalse(np.array_equal(joined, apart))
+        np.testing.assert_array_equal(
+            spectralseg.k_way_segmentation_automatic(self.v, self.f, **self.too_close_to_join), apart)
+        np.testing.assert_array_equal(auto(self.v, self.f, method="concave_merge", **self.apart), apart)
+
+    def test_distances(self):
+        dist = spectralseg.face_distances
+        self.assertTrue(np.isfinite(dist(self.v, self.f, 0)).all())
+        for options in (self.apart, self.too_close_to_join):
+            d, nearest = dist(self.v, self.f, 0, return_nearest=True, **options)
+            self.assertTrue(np.isfinite(d[:12]).all())
+            self.assertTrue(np.isinf(d[12:]).all())
+            self.assertEqual(nearest.tolist(), [0] * 12 + [-1] * 12)
+        self.assertTrue(np.isfinite(dist(self.sv, self.sf, 0)).all())
+        self.assertTrue(np.isinf(dist(self.sv, self.sf, 0, speck_area_fraction=0)[24:]).all())
+
+
 class Errors(unittest.TestCase):
     def assertInvalid(self, regex, function, *args, **kwargs):
         with self.assertRaisesRegex(ValueError, regex) as e:
@@ -275,6 +345,14 @@ class Errors(unittest.TestCase):
                            eta=float("nan"))
         self.assertInvalid("source face 99999 does not exist", spectralseg.face_distances, v, f, 99999)
         self.assertInvalid("sources must be", spectralseg.face_distances, v, f, [])
+        self.assertInvalid(r"contact_distance must be a number in \[0", seg, v, f, 3, contact_distance=-1)
+        self.assertInvalid("contact_distance must be", spectralseg.automatic_segmentation, v, f,
+                           contact_distance=float("nan"))
+        self.assertInvalid("contact_distance must be", spectralseg.face_distances, v, f, 0, contact_distance=1.5)
+        self.assertInvalid("speck_area_fraction must be", spectralseg.face_distances, v, f, 0,
+                           speck_area_fraction=2)
+        self.assertInvalid("speck_area_fraction must be", spectralseg.k_way_segmentation_automatic, v, f,
+                           speck_area_fraction=-0.1)
         if not spectralseg.has_embree:
             self.assertInvalid("not available", seg, v, f, 3, ray_caster="embree")
         with self.assertRaises(TypeError):
