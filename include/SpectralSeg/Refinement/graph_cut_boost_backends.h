@@ -10,8 +10,8 @@
 /// `SPECTRALSEG_USE_MAXFLOW` defined; without it `graph_cut_boundaries.h`
 /// includes it, since the compressed-sparse-row backend is then the
 /// default). Programs that do not include it do not compile Boost's
-/// max-flow (about a fifth of the compile time of a k-way segmentation)
-/// and, with GCC 12 and Boost 1.74, are spared `-Wmaybe-uninitialized`
+/// max-flow (doc/benchmarks.md, "Compile time") and, with GCC 12 and
+/// Boost 1.74, are spared `-Wmaybe-uninitialized`
 /// false positives that `boykov_kolmogorov_max_flow.hpp` gives on the
 /// adjacency list, which no diagnostic pragma silences: add
 /// `-Wno-maybe-uninitialized` to programs that include this header.

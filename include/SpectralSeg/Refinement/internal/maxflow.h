@@ -32,8 +32,8 @@ namespace internal {
 // CGAL::Alpha_expansion_MaxFlow_impl, call for call, without the header
 // that declares it: CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h includes
 // alpha_expansion_graphcut.h and with it Boost's max-flow, adjacency list
-// and CGAL's named parameters, 0.3 GB of a k-way translation unit's peak
-// compile memory (doc/benchmarks.md, "Compile time").
+// and CGAL's named parameters, which weigh on a k-way translation unit's
+// peak compile memory (doc/benchmarks.md, "Compile time").
 class Maxflow_impl
 {
 public:
