@@ -34,10 +34,12 @@
 //                images, VSI weights); CGAL: sdf_values
 //   sampling     farthest-point sampling of the Nyström samples, up to the
 //                start of the last "distance rows" stage (empty when the
-//                exact embedding is used: up to 2,000 faces)
+//                exact embedding is used: up to 2,000 faces); when the
+//                sampling keeps its Dijkstra rows (the default), up to the
+//                start of "eigen-solve", rows and affinities included
 //   distances    the distance rows of the samples (all faces for the exact
 //                embedding) and their conversion into affinities, up to the
-//                start of "eigen-solve"
+//                start of "eigen-solve"; empty when the sampling kept its rows
 //   eigen-solve  eigen-solve and Nyström extension, up to the start of K-means
 //   clustering   K-means + connected segments + merge (K_way_result::timings);
 //                CGAL: segmentation_from_sdf_values (soft clustering and graph
@@ -205,12 +207,19 @@ Run run_spectralseg(const Mesh& mesh, std::size_t k, unsigned threads, bool trac
   const double kmeans = clock.first("k-means", t1);
   const double eigen = clock.first("eigen-solve", t1);
   const double rows = eigen < 0 ? -1. : clock.last_start("distance rows", t1, eigen);
+  const bool sampled = clock.first("farthest point sampling", t1) >= 0 || clock.first("gamma sampling", t1) >= 0;
   if(kmeans >= 0 && eigen >= 0 && rows >= 0)
   {
-    const bool sampled = clock.first("farthest point sampling", t1) >= 0 || clock.first("gamma sampling", t1) >= 0;
     if(sampled)
       r.sampling = rows - t1;
     r.distances = eigen - (sampled ? rows : t1);
+    r.eigen_solve = kmeans - eigen;
+  }
+  else if(kmeans >= 0 && eigen >= 0 && sampled)
+  {
+    // the farthest-point sampling kept its Dijkstra rows: no separate
+    // distance-row stage, the sampling column holds both
+    r.sampling = eigen - t1;
     r.eigen_solve = kmeans - eigen;
   }
   for(const auto& stage : kr.timings)
