@@ -27,7 +27,12 @@
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
 //   --extra-clusters N  K-means clusters beyond k, merged back (default 3; 0 = thesis)
 //   --seed S       start face of the Nyström sampling
-//   --mu M         graph-cut smoothness (default 0.3)   --mean-edge   --max-min-seeds
+//   --thesis       the thesis's k-way method (K_way_options::thesis(): no extra clusters, its graph cut,
+//                  no crease split); the options below change single settings
+//   --mu M         graph-cut smoothness (default 10; thesis 0.3)   --mean-edge | --longest-edge (thesis)
+//   --band B       graph-cut band width (default 0.4; 0: every face may move, the thesis)
+//   --crease-angle A  split clusters along closed concave creases of A degrees (default 30; 0: off)
+//   --max-min-seeds
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/automatic_segmentation.h>
@@ -102,8 +107,11 @@ struct Options
   double eta = 0.1, min_part_area = SpectralSeg::Automatic_segmentation_options<>().min_part_area_fraction;
   bool structure_only = false, perimeter_base = false;
   std::size_t auto_k = 0; // > 0: method kway chooses k itself, at most this many (method auto: default 20)
-  double mu = 0.3;         // graph-cut smoothness
-  bool mean_edge = false;  // graph cut: edge lengths over the mean edge length
+  bool thesis = false;     // K_way_options::thesis(): no extra clusters, the thesis's graph cut, no crease split
+  double mu = -1;          // graph-cut smoothness (< 0: the default)
+  int mean_edge = -1;      // graph cut: edge lengths over the mean (1) or the longest (0) edge length (< 0: default)
+  double band = -1;        // graph-cut band width (< 0: the default)
+  double crease_angle = -1; // crease split angle in degrees (< 0: the default)
   bool max_min_seeds = false; // K-means seeded by max-min in the embedding instead of the samples
 };
 
@@ -211,10 +219,16 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   const SpectralSeg::Execution exec(o.threads);
   const std::vector<double> w = part_aware_weights(o, g, exec);
   const SpectralSeg::Weighted_dual_graph wg(g, w);
-  SpectralSeg::K_way_options ko;
+  SpectralSeg::K_way_options ko = o.thesis ? SpectralSeg::K_way_options::thesis() : SpectralSeg::K_way_options();
   ko.boundary_enhancement = o.graph_cut;
-  ko.graph_cut.smoothness = o.mu;
-  ko.graph_cut.normalize_by_mean_edge = o.mean_edge;
+  if(o.mu >= 0.)
+    ko.graph_cut.smoothness = o.mu;
+  if(o.mean_edge >= 0)
+    ko.graph_cut.normalize_by_mean_edge = o.mean_edge == 1;
+  if(o.band >= 0.)
+    ko.graph_cut.band_width = o.band;
+  if(o.crease_angle >= 0.)
+    ko.crease_angle = o.crease_angle;
   ko.seed_with_samples = !o.max_min_seeds;
   ko.embedding.seed = o.seed;
   if(o.extra_clusters >= 0)
@@ -392,7 +406,15 @@ int main(int argc, char** argv)
     else if(a == "--max-min-seeds")
       o.max_min_seeds = true;
     else if(a == "--mean-edge")
-      o.mean_edge = true;
+      o.mean_edge = 1;
+    else if(a == "--longest-edge")
+      o.mean_edge = 0;
+    else if(a == "--band")
+      o.band = std::stod(next());
+    else if(a == "--crease-angle")
+      o.crease_angle = std::stod(next());
+    else if(a == "--thesis")
+      o.thesis = true;
     else if(a == "--mu")
       o.mu = std::stod(next());
     else if(a == "--auto-k")

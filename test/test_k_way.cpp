@@ -393,3 +393,56 @@ TEST_CASE("hybrid segmentation finds the star's parts, deterministically, and ch
     CHECK_THROWS_AS(segment_hybrid(s.weighted, bad), Invalid_input);
   }
 }
+
+TEST_CASE("crease regions: closed loops of concave creases bound the star's limbs", "[k_way][creases]")
+{
+  const Star& s = star();
+  std::vector<int> region;
+  // the limbs meet the body at right angles all around: five regions, the parts
+  CHECK(Refinement::crease_regions(s.graph, 30., region) == 5);
+  REQUIRE(region.size() == s.soup.face_part.size());
+  CHECK(Evaluation::rand_index_error(region, s.soup.face_part) == 0.);
+  // creases below the angle, or the split turned off: one region
+  CHECK(Refinement::crease_regions(s.graph, 100., region) == 1);
+  CHECK(Refinement::crease_regions(s.graph, 0., region) == 1);
+  CHECK(std::set<int>(region.begin(), region.end()) == std::set<int>{0});
+  CHECK_THROWS_AS(Refinement::crease_regions(s.graph, std::numeric_limits<double>::quiet_NaN(), region), Invalid_input);
+  // a convex fold never separates, a concave one does
+  const Dual_graph valley = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::fold(1., true)));
+  const Dual_graph ridge = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::fold(1., false)));
+  CHECK(Refinement::crease_regions(valley, 30., region) == 2);
+  CHECK(Refinement::crease_regions(ridge, 30., region) == 1);
+
+  // one label split along the regions: a label per region
+  Refinement::crease_regions(s.graph, 30., region);
+  std::vector<int> labels(region.size(), 7);
+  CHECK(Refinement::split_along_regions(region, labels) == 5);
+  CHECK(labels == region);
+  std::vector<int> short_labels(region.size() - 1, 0);
+  CHECK_THROWS_AS(Refinement::split_along_regions(region, short_labels), Invalid_input);
+}
+
+TEST_CASE("banded graph cut: faces far from the boundaries keep their label, no segment vanishes", "[graphcut]")
+{
+  const Star& s = star();
+  const K_way_result r = segment_k_way(s.weighted, 5, K_way_options::thesis());
+  const std::vector<int>& start = r.clusters.labels;
+  const std::vector<char> band = Refinement::internal::boundary_band(s.graph, start, 0.4);
+  std::size_t inside = 0, outside = 0;
+  for(char b : band)
+    (b ? inside : outside) += 1;
+  CHECK(inside > 0);
+  CHECK(outside > 0);
+  // a smoothness term that would otherwise swallow whole segments
+  Refinement::Graph_cut_options o = Refinement::Graph_cut_options::banded();
+  o.smoothness = 1e6;
+  std::vector<int> labels = start;
+  Refinement::graph_cut_boundaries(s.graph, r.embedding.coordinates, r.clusters.centroids, labels, o);
+  for(std::size_t f = 0; f < labels.size(); ++f)
+    if(!band[f])
+      CHECK(labels[f] == start[f]);
+  CHECK(std::set<int>(labels.begin(), labels.end()) == std::set<int>(start.begin(), start.end()));
+  o.band_width = -1.;
+  CHECK_THROWS_AS(Refinement::graph_cut_boundaries(s.graph, r.embedding.coordinates, r.clusters.centroids, labels, o),
+                  Invalid_input);
+}

@@ -35,8 +35,11 @@ struct Basic_K_way_options
   Embedding::Embedding_options embedding;
   /// whether the K-means labels are refined by the graph cut (thesis 4.3.3)
   bool boundary_enhancement = true;
-  /// \f$\mu\f$, \f$\nu\f$ and max-flow backend of the graph cut
-  Refinement::Graph_cut_options graph_cut;
+  /// \f$\mu\f$, \f$\nu\f$, band and max-flow backend of the graph cut;
+  /// by default `Refinement::Graph_cut_options::banded()` (our addition: a
+  /// stronger smoothness term acting in a band around the boundaries), the
+  /// thesis's values with `Refinement::Graph_cut_options()`
+  Refinement::Graph_cut_options graph_cut = Refinement::Graph_cut_options::banded();
   /// bound on K-means rounds
   std::size_t kmeans_iterations = 100;
   /// Nyström path: seed K-means with the first `k` sample faces (the
@@ -61,12 +64,21 @@ struct Basic_K_way_options
   /// ear keeps the ear while the smooth hip joint merges the leg into the
   /// body
   double merge_min_area_fraction = 0.005;
+  /// with extra clusters (our addition): before the merge, each K-means
+  /// cluster is split along the closed loops of concave creases of at least
+  /// this dihedral angle, in degrees (`Refinement::crease_regions()`), so
+  /// that a part bounded by a crease all around (a shaft in a housing, a
+  /// knob on a lid) is not shared with its neighbour; 0 turns it off
+  double crease_angle = 30.;
 
-  /// the thesis's k-way method: K-means with exactly `k` clusters
+  /// the thesis's k-way method: K-means with exactly `k` clusters, the
+  /// thesis's graph cut, no crease split
   static Basic_K_way_options thesis()
   {
     Basic_K_way_options o;
     o.extra_clusters = 0;
+    o.graph_cut = Refinement::Graph_cut_options();
+    o.crease_angle = 0.;
     return o;
   }
 
@@ -84,6 +96,7 @@ struct Basic_K_way_options
     o.extra_clusters = extra_clusters;
     o.merge_strength_limit = merge_strength_limit;
     o.merge_min_area_fraction = merge_min_area_fraction;
+    o.crease_angle = crease_angle;
     return o;
   }
 };

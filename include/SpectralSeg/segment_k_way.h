@@ -11,6 +11,7 @@
 #include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
 #include <SpectralSeg/K_way_options.h>
 #include <SpectralSeg/Refinement/connected_segments.h>
+#include <SpectralSeg/Refinement/crease_regions.h>
 #include <SpectralSeg/Refinement/graph_cut_boundaries.h>
 #include <SpectralSeg/Refinement/merge_segments.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
@@ -78,6 +79,12 @@ void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_fina
   if(k > k_final)
   {
     std::vector<int> labels = r.labels;
+    if(options.crease_angle > 0.)
+    {
+      std::vector<int> region;
+      if(Refinement::crease_regions(graph.graph(), options.crease_angle, region) > 1)
+        Refinement::split_along_regions(region, labels);
+    }
     Refinement::make_segments_connected(graph.graph(), labels);
     const std::size_t m = merge(labels);
     if(m <= k)
@@ -125,11 +132,14 @@ void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_fina
 ///    (`options.embedding`);
 /// 2. K-means in the embedding into \f$m\f$ clusters, seeded with the
 ///    sample faces (Nyström) or by max-min (exact);
-/// 3. if \f$m > k\f$: the clusters are made connected regions and the
+/// 3. if \f$m > k\f$: the clusters are split along the closed loops of
+///    sharp concave creases (`options.crease_angle`,
+///    `Refinement::crease_regions()`), made connected regions, and the
 ///    adjacent ones with the weakest (least concave) boundary are merged
 ///    until \f$k\f$ are left (`Refinement::merge_weakest_boundaries()`);
 ///    each merged segment's proxy is its mean in the embedding;
-/// 4. graph-cut boundary enhancement on the \f$k\f$ segments (optional);
+/// 4. graph-cut boundary enhancement on the \f$k\f$ segments (optional;
+///    `options.graph_cut`, by default in a band along the boundaries);
 /// 5. every segment made one connected region (`Refinement::make_segments_connected()`).
 ///
 /// On a mesh with more connected components than \f$m\f$ the merge cannot

@@ -43,6 +43,8 @@ struct Segment_options
   unsigned threads = 0;
   unsigned seed = 0;
   std::size_t extra_clusters = SpectralSeg::K_way_options().extra_clusters;
+  std::string graph_cut = "banded";
+  double crease_angle = SpectralSeg::K_way_options().crease_angle;
   double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
   std::string labels, out_mesh, png, json;
   bool binary = false;   // PLY outputs in binary
@@ -73,6 +75,16 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
     ->capture_default_str();
   cmd->add_option("--samples", o.samples, "Nyström samples (default: one more than the K-means clusters)")->check(Count(0, max_samples));
   cmd->add_flag("--no-graph-cut", o.no_graph_cut, "skip the graph-cut boundary enhancement");
+  cmd->add_option("--graph-cut", o.graph_cut,
+                  "graph-cut settings: banded (a strong smoothness term acting near the boundaries) or thesis "
+                  "(the thesis's weak smoothness term, every face free)")
+    ->check(CLI::IsMember({"banded", "thesis"}))
+    ->capture_default_str();
+  cmd->add_option("--crease-angle", o.crease_angle,
+                  "with extra clusters: split the K-means clusters along closed loops of concave creases of at least "
+                  "this many degrees before merging (0: off)")
+    ->capture_default_str()
+    ->check(Finite_range(0., 180.));
   cmd->add_option("--graph-cut-backend", o.graph_cut_backend,
                   "max-flow code of the graph cut: maxflow (fastest, GPL), boost-csr or boost-list (LGPL)")
     ->check(CLI::IsMember({"default", "maxflow", "boost-csr", "boost-list"}))
@@ -118,7 +130,8 @@ inline std::vector<std::string> segment_option_warnings(const Segment_options& o
             "it applies to --k auto --auto-method salient-cuts");
   if(salient)
     ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--kernel", "--sampling",
-             "--samples", "--seed", "--no-graph-cut", "--graph-cut-backend", "--extra-clusters", "--max-k",
+             "--samples", "--seed", "--no-graph-cut", "--graph-cut", "--crease-angle", "--graph-cut-backend",
+             "--extra-clusters", "--max-k",
              "--min-boundary-contrast"},
             "--auto-method salient-cuts uses none of the k-way options");
   else
@@ -128,7 +141,7 @@ inline std::vector<std::string> segment_option_warnings(const Segment_options& o
     if(o.sampling == "exact")
       ignored({"--samples", "--seed"}, "it sets the Nyström sampling, and --sampling exact takes no samples");
     if(o.no_graph_cut)
-      ignored({"--graph-cut-backend"}, "--no-graph-cut skips the graph cut");
+      ignored({"--graph-cut-backend", "--graph-cut"}, "--no-graph-cut skips the graph cut");
     for(const std::string& m : metric_option_warnings(cmd, o.metric))
       w.push_back(m);
   }
@@ -278,6 +291,9 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   options.embedding.seed = o.seed;
   options.extra_clusters = o.extra_clusters;
   options.boundary_enhancement = !o.no_graph_cut;
+  if(o.graph_cut == "thesis")
+    options.graph_cut = SpectralSeg::Refinement::Graph_cut_options();
+  options.crease_angle = o.crease_angle;
   if(o.graph_cut_backend == "maxflow")
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::maxflow;
   else if(o.graph_cut_backend == "boost-csr")
