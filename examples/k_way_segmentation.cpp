@@ -14,6 +14,7 @@
 #include <SpectralSeg/Clustering/Kmeans.h>
 #include <SpectralSeg/IO/write_segmented_mesh.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
+#include <SpectralSeg/Refinement/crease_regions.h>
 #include <SpectralSeg/Refinement/merge_segments.h>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/k_way_segmentation.h>
@@ -86,6 +87,15 @@ int main(int argc, char** argv)
   const std::size_t left = SpectralSeg::Refinement::merge_weakest_boundaries(
     graph, SpectralSeg::Refinement::concave_angle_weights(graph), merged, 3);
   std::cout << "thesis's segments merged by hand: " << left << " segments\n";
+
+  // The regions that closed loops of concave creases (45 degrees or more)
+  // enclose, and the thesis's segments cut along them: what segment_k_way()
+  // does to its clusters before merging.
+  std::vector<int> region;
+  const std::size_t regions = SpectralSeg::Refinement::crease_regions(graph, 45., region);
+  std::vector<int> cut = thesis.labels;
+  std::cout << "crease regions: " << regions << "; thesis's segments cut along them: "
+            << SpectralSeg::Refinement::split_along_regions(region, cut) << " labels\n";
 
   // k chosen by the library, at most 12.
   SpectralSeg::K_way_automatic_options automatic_options;
