@@ -173,7 +173,9 @@ inline std::vector<char> boundary_band(const Dual_graph& graph, const std::vecto
   for(std::size_t f = 0; f < n; ++f)
   {
     const std::size_t l = std::size_t(labels[f]);
-    out[f] = distance[f] <= std::min(width * std::sqrt(area[l]), 0.5 * deepest[l]) ? 1 : 0;
+    // strictly nearer than half the deepest face: a segment whose faces all
+    // touch its boundary (a tiny mesh) stays as it is
+    out[f] = distance[f] <= width * std::sqrt(area[l]) && distance[f] < 0.5 * deepest[l] ? 1 : 0;
   }
   return out;
 }
