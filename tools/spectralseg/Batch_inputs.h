@@ -245,34 +245,24 @@ inline Batch_list list_batch_meshes(const std::vector<std::string>& inputs, cons
     auto fail = [&](const std::error_code& error) {
       throw SpectralSeg::Io_error("cannot read the folder '" + input + "': " + error.message());
     };
+    // the same walk over either kind of iterator
+    auto walk = [&](auto it) {
+      const decltype(it) end;
+      if(ec)
+        fail(ec);
+      for(; it != end; it.increment(ec))
+      {
+        if(ec)
+          fail(ec);
+        visit(*it, it);
+      }
+      if(ec)
+        fail(ec);
+    };
     if(recursive)
-    {
-      fs::recursive_directory_iterator it(folder, ec), end;
-      if(ec)
-        fail(ec);
-      for(; it != end; it.increment(ec))
-      {
-        if(ec)
-          fail(ec);
-        visit(*it, it);
-      }
-      if(ec)
-        fail(ec);
-    }
+      walk(fs::recursive_directory_iterator(folder, ec));
     else
-    {
-      fs::directory_iterator it(folder, ec), end;
-      if(ec)
-        fail(ec);
-      for(; it != end; it.increment(ec))
-      {
-        if(ec)
-          fail(ec);
-        visit(*it, it);
-      }
-      if(ec)
-        fail(ec);
-    }
+      walk(fs::directory_iterator(folder, ec));
   }
   for(const std::string& list : lists)
     for(const std::string& entry : read_list_file(list))
