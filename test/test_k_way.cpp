@@ -17,6 +17,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <set>
 
@@ -445,4 +447,92 @@ TEST_CASE("banded graph cut: faces far from the boundaries keep their label, no 
   o.band_width = -1.;
   CHECK_THROWS_AS(Refinement::graph_cut_boundaries(s.graph, r.embedding.coordinates, r.clusters.centroids, labels, o),
                   Invalid_input);
+}
+
+TEST_CASE("alpha expansion: no expansion move improves its result, out-of-reach labels are never taken", "[graphcut]")
+{
+  // a 12 x 12 grid with 4 labels, pseudo-random data terms and weights, and
+  // a quarter of the (vertex, label) pairs out of reach (infinite cost)
+  Refinement::internal::Potts_problem p;
+  const std::size_t side = 12;
+  p.vertices = side * side;
+  p.labels = 4;
+  std::uint32_t state = 12345u;
+  const auto next = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  };
+  std::vector<std::size_t> l(p.vertices);
+  for(std::size_t v = 0; v < p.vertices; ++v)
+  {
+    l[v] = v % p.labels;
+    for(std::size_t c = 0; c < p.labels; ++c)
+      p.cost.push_back(c != l[v] && next() < 0.25 ? std::numeric_limits<double>::infinity() : 3. * next());
+  }
+  for(std::size_t i = 0; i < side; ++i)
+    for(std::size_t j = 0; j < side; ++j)
+    {
+      if(i + 1 < side)
+      {
+        p.edges.emplace_back(i * side + j, (i + 1) * side + j);
+        p.weights.push_back(next());
+      }
+      if(j + 1 < side)
+      {
+        p.edges.emplace_back(i * side + j, i * side + j + 1);
+        p.weights.push_back(next());
+      }
+    }
+  const double before = p.energy(l);
+  const double after = Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, l);
+  CHECK(after < before);
+  CHECK(after == Approx(p.energy(l)).epsilon(1e-12));
+  for(std::size_t v = 0; v < p.vertices; ++v)
+    CHECK(std::isfinite(p.cost[v * p.labels + l[v]]));
+  // a local minimum: no label's expansion lowers the energy any more
+  const Refinement::internal::Potts_adjacency adjacency(p);
+  std::vector<std::size_t> candidate(p.vertices, std::size_t(-1));
+  for(std::size_t alpha = 0; alpha < p.labels; ++alpha)
+  {
+    double delta = 0.;
+    Refinement::internal::best_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, adjacency, l, alpha,
+                                                                                              candidate, delta);
+    INFO("alpha " << alpha);
+    CHECK(delta >= -1e-9);
+  }
+}
+
+TEST_CASE("banded graph cut: a face only takes the label of a segment whose boundary is within reach", "[graphcut]")
+{
+  const Star& s = star();
+  const K_way_result r = segment_k_way(s.weighted, 5, K_way_options::thesis());
+  const std::vector<int>& start = r.clusters.labels;
+  const Refinement::Graph_cut_options o = Refinement::Graph_cut_options::banded();
+  const std::vector<char> band = Refinement::internal::boundary_band(s.graph, start, o.band_width);
+  const Refinement::internal::Band_labels reach =
+    Refinement::internal::band_labels(s.graph, start, band, o.band_width);
+  REQUIRE(reach.offset.size() == start.size() + 1);
+  std::size_t with_reach = 0;
+  for(std::size_t f = 0; f < start.size(); ++f)
+  {
+    if(!band[f])
+      CHECK(reach.offset[f] == reach.offset[f + 1]);
+    for(std::size_t i = reach.offset[f]; i < reach.offset[f + 1]; ++i)
+      CHECK(reach.reachable[i] != start[f]);
+    with_reach += reach.offset[f + 1] > reach.offset[f] ? 1 : 0;
+  }
+  CHECK(with_reach > 0);
+  std::vector<int> labels = start;
+  Refinement::graph_cut_boundaries(s.graph, r.embedding.coordinates, r.clusters.centroids, labels, o);
+  std::size_t changed = 0;
+  for(std::size_t f = 0; f < labels.size(); ++f)
+  {
+    if(labels[f] == start[f])
+      continue;
+    ++changed;
+    CHECK(std::find(reach.reachable.begin() + std::ptrdiff_t(reach.offset[f]),
+                    reach.reachable.begin() + std::ptrdiff_t(reach.offset[f + 1]),
+                    labels[f]) != reach.reachable.begin() + std::ptrdiff_t(reach.offset[f + 1]));
+  }
+  INFO("changed " << changed);
 }

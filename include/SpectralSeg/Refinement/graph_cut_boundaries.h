@@ -180,6 +180,90 @@ inline std::vector<char> boundary_band(const Dual_graph& graph, const std::vecto
   return out;
 }
 
+// For the faces of `in_band`, the other labels each may take: those of the
+// segments whose boundary with the face's segment lies within `width` times
+// the square root of that segment's area (geodesic distance over the dual
+// graph, through band faces of the same segment). Compressed rows: the
+// labels of face f are reachable[offset[f]] .. reachable[offset[f + 1] - 1].
+struct Band_labels
+{
+  std::vector<std::size_t> offset;
+  std::vector<int> reachable;
+};
+
+inline Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& labels,
+                               const std::vector<char>& in_band, double width)
+{
+  const std::size_t n = graph.number_of_faces();
+  int count = 0;
+  for(int l : labels)
+    count = std::max(count, l + 1);
+  std::vector<double> area(std::size_t(count), 0.);
+  for(std::size_t f = 0; f < n; ++f)
+    area[std::size_t(labels[f])] += graph.geometry().areas[f];
+  // the band faces on each label's boundary, as (label across, face)
+  std::vector<std::pair<int, Dual_graph::size_type>> sources;
+  for(const Dual_graph::Edge& e : graph.edges())
+    if(labels[e.face[0]] != labels[e.face[1]])
+      for(int side = 0; side < 2; ++side)
+        if(in_band[e.face[side]])
+          sources.emplace_back(labels[e.face[1 - side]], e.face[side]);
+  std::sort(sources.begin(), sources.end());
+  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+
+  std::vector<std::pair<Dual_graph::size_type, int>> pairs; // (face, label it may take)
+  std::vector<double> distance(n, std::numeric_limits<double>::infinity());
+  std::vector<Dual_graph::size_type> touched;
+  typedef std::pair<double, Dual_graph::size_type> Item;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  for(std::size_t begin = 0; begin < sources.size();)
+  {
+    const int across = sources[begin].first;
+    std::size_t end = begin;
+    for(; end < sources.size() && sources[end].first == across; ++end)
+    {
+      distance[sources[end].second] = 0.;
+      touched.push_back(sources[end].second);
+      queue.emplace(0., sources[end].second);
+    }
+    while(!queue.empty())
+    {
+      const Item top = queue.top();
+      queue.pop();
+      const Dual_graph::size_type f = top.second;
+      if(top.first > distance[f])
+        continue;
+      pairs.emplace_back(f, across);
+      graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type e) {
+        const double d = top.first + graph.edge(e).geodesic_length;
+        if(in_band[g] && labels[g] == labels[f] && d < distance[g] &&
+           d <= width * std::sqrt(area[std::size_t(labels[g])]))
+        {
+          if(distance[g] == std::numeric_limits<double>::infinity())
+            touched.push_back(g);
+          distance[g] = d;
+          queue.emplace(d, g);
+        }
+      });
+    }
+    for(Dual_graph::size_type f : touched)
+      distance[f] = std::numeric_limits<double>::infinity();
+    touched.clear();
+    begin = end;
+  }
+  std::sort(pairs.begin(), pairs.end());
+  Band_labels out;
+  out.offset.assign(n + 1, 0);
+  for(const auto& p : pairs)
+    ++out.offset[p.first + 1];
+  for(std::size_t f = 0; f < n; ++f)
+    out.offset[f + 1] += out.offset[f];
+  out.reachable.reserve(pairs.size());
+  for(const auto& p : pairs)
+    out.reachable.push_back(p.second);
+  return out;
+}
+
 inline void run_boost_max_flow_backend(Graph_cut_backend backend, const Potts_problem& problem,
                                        std::vector<std::size_t>& l)
 {
@@ -259,9 +343,17 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   }
 
   // The band: faces far from their segment's boundary keep their label.
+  // Each band face may only take the labels of the segments whose boundary
+  // is within the band's reach, so that an expansion move is a problem over
+  // the faces near its label's segment, not over the whole band.
   std::vector<char> in_band(n, 1);
+  internal::Band_labels reach;
   if(options.band_width > 0.)
+  {
     in_band = internal::boundary_band(graph, labels, options.band_width);
+    reach = internal::band_labels(graph, labels, in_band, options.band_width);
+  }
+  const double unreachable = std::numeric_limits<double>::infinity();
 
   // Data term of each face; the faces it does not decide become the
   // variables of the problem.
@@ -288,6 +380,15 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
     const std::size_t own = std::size_t(labels[f]);
     if(!in_band[f])
       continue;
+    if(options.band_width > 0.)
+    {
+      // only the own label and those within reach
+      for(std::size_t c = 0; c < k; ++c)
+        if(c != own && std::find(reach.reachable.begin() + std::ptrdiff_t(reach.offset[f]),
+                                 reach.reachable.begin() + std::ptrdiff_t(reach.offset[f + 1]),
+                                 int(c)) == reach.reachable.begin() + std::ptrdiff_t(reach.offset[f + 1]))
+          face_cost[c] = unreachable;
+    }
     bool decided = options.fix_decided_faces;
     for(std::size_t c = 0; c < k && decided; ++c)
       if(c != own && face_cost[c] - face_cost[own] <= smoothness_around[f])

@@ -41,6 +41,42 @@ struct Potts_problem
   }
 };
 
+// The vertices' edges in compressed rows, and for each label the vertices
+// for which it has a finite cost (a label with an infinite cost is out of a
+// vertex's reach), built once for all the moves.
+struct Potts_adjacency
+{
+  std::vector<std::size_t> offset;                      // vertices + 1
+  std::vector<std::pair<std::size_t, double>> neighbour; // (vertex, weight)
+  std::vector<double> around;                           // sum of a vertex's edge weights
+  std::vector<std::vector<std::size_t>> able;           // per label
+
+  explicit Potts_adjacency(const Potts_problem& p)
+    : offset(p.vertices + 1, 0), neighbour(2 * p.edges.size()), around(p.vertices, 0.), able(p.labels)
+  {
+    for(const auto& e : p.edges)
+    {
+      ++offset[e.first + 1];
+      ++offset[e.second + 1];
+    }
+    for(std::size_t v = 0; v < p.vertices; ++v)
+      offset[v + 1] += offset[v];
+    std::vector<std::size_t> next(offset.begin(), offset.end() - 1);
+    for(std::size_t i = 0; i < p.edges.size(); ++i)
+    {
+      const std::size_t a = p.edges[i].first, b = p.edges[i].second;
+      neighbour[next[a]++] = std::make_pair(b, p.weights[i]);
+      neighbour[next[b]++] = std::make_pair(a, p.weights[i]);
+      around[a] += p.weights[i];
+      around[b] += p.weights[i];
+    }
+    for(std::size_t v = 0; v < p.vertices; ++v)
+      for(std::size_t c = 0; c < p.labels; ++c)
+        if(std::isfinite(p.cost[v * p.labels + c]))
+          able[c].push_back(v);
+  }
+};
+
 // The best alpha-expansion of `l` (Boykov, Veksler and Zabih 2001), with the
 // graph construction of CGAL's alpha_expansion_graphcut(); `MaxFlow` is one
 // of CGAL's Alpha_expansion_*_impl classes. A new max-flow object is built
@@ -49,43 +85,48 @@ struct Potts_problem
 //
 // Only the candidates of the move are variables of its max-flow problem: a
 // vertex for which alpha costs more than its current label plus all its
-// edge weights (`around`) cannot take alpha in an optimal move (keeping its
-// label would be cheaper whatever its neighbours do), so it keeps its label
-// and enters its neighbours' terms as a constant. Returns false when no
-// vertex can take alpha.
+// edge weights cannot take alpha in an optimal move (keeping its label
+// would be cheaper whatever its neighbours do), so it keeps its label and
+// enters its neighbours' terms as a constant; so does a vertex for which
+// alpha is out of reach (infinite cost). The work of a move is therefore
+// proportional to its candidates and their edges, not to the problem.
+// Returns the vertices that took alpha (`l` unchanged) and, in `delta`,
+// the change of energy if they do.
 template <typename MaxFlow>
-bool best_expansion(const Potts_problem& p, const std::vector<double>& around, std::vector<std::size_t>& l,
-                    std::size_t alpha)
+std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adjacency& adjacency,
+                                        const std::vector<std::size_t>& l, std::size_t alpha,
+                                        std::vector<std::size_t>& candidate, double& delta)
 {
   typedef typename MaxFlow::Vertex_descriptor Vertex;
   const std::size_t none = std::size_t(-1);
-  std::vector<std::size_t> candidate(p.vertices, none);
   std::vector<std::size_t> vertex_of;
-  for(std::size_t v = 0; v < p.vertices; ++v)
-    if(l[v] != alpha && p.cost[v * p.labels + alpha] - p.cost[v * p.labels + l[v]] <= around[v])
+  for(const std::size_t v : adjacency.able[alpha])
+    if(l[v] != alpha && p.cost[v * p.labels + alpha] - p.cost[v * p.labels + l[v]] <= adjacency.around[v])
     {
       candidate[v] = vertex_of.size();
       vertex_of.push_back(v);
     }
+  delta = 0.;
   if(vertex_of.empty())
-    return false;
-  // t-weights: cost of taking alpha, cost of keeping the label
+    return {};
+  // t-weights: cost of taking alpha, cost of keeping the label, with the
+  // edges to the vertices that are not candidates as constants
   std::vector<double> take(vertex_of.size()), keep(vertex_of.size());
   for(std::size_t i = 0; i < vertex_of.size(); ++i)
   {
-    take[i] = p.cost[vertex_of[i] * p.labels + alpha];
-    keep[i] = p.cost[vertex_of[i] * p.labels + l[vertex_of[i]]];
-  }
-  for(std::size_t e = 0; e < p.edges.size(); ++e)
-  {
-    const std::size_t a = p.edges[e].first, b = p.edges[e].second;
-    if((candidate[a] == none) == (candidate[b] == none))
-      continue;
-    const std::size_t c = candidate[a] != none ? a : b, fixed = candidate[a] != none ? b : a;
-    if(l[fixed] != alpha)
-      take[candidate[c]] += p.weights[e];
-    if(l[fixed] != l[c])
-      keep[candidate[c]] += p.weights[e];
+    const std::size_t v = vertex_of[i];
+    take[i] = p.cost[v * p.labels + alpha];
+    keep[i] = p.cost[v * p.labels + l[v]];
+    for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
+    {
+      const std::size_t u = adjacency.neighbour[j].first;
+      if(candidate[u] != none)
+        continue;
+      if(l[u] != alpha)
+        take[i] += adjacency.neighbour[j].second;
+      if(l[u] != l[v])
+        keep[i] += adjacency.neighbour[j].second;
+    }
   }
 
   MaxFlow flow;
@@ -96,20 +137,24 @@ bool best_expansion(const Potts_problem& p, const std::vector<double>& around, s
     vertex[i] = flow.add_vertex();
     flow.add_tweight(vertex[i], take[i], keep[i]);
   }
-  for(std::size_t e = 0; e < p.edges.size(); ++e)
+  for(std::size_t i = 0; i < vertex_of.size(); ++i)
   {
-    const std::size_t a = candidate[p.edges[e].first], b = candidate[p.edges[e].second];
-    if(a == none || b == none)
-      continue;
-    const double w = p.weights[e];
-    if(l[vertex_of[a]] == l[vertex_of[b]])
-      flow.add_edge(vertex[a], vertex[b], w, w);
-    else
+    const std::size_t v = vertex_of[i];
+    for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
     {
-      Vertex between = flow.add_vertex();
-      flow.add_edge(between, vertex[a], w, w);
-      flow.add_edge(between, vertex[b], w, w);
-      flow.add_tweight(between, 0., w);
+      const std::size_t u = adjacency.neighbour[j].first, b = candidate[u];
+      if(b == none || b < i) // each edge between candidates once
+        continue;
+      const double w = adjacency.neighbour[j].second;
+      if(l[v] == l[u])
+        flow.add_edge(vertex[i], vertex[b], w, w);
+      else
+      {
+        Vertex between = flow.add_vertex();
+        flow.add_edge(between, vertex[i], w, w);
+        flow.add_edge(between, vertex[b], w, w);
+        flow.add_tweight(between, 0., w);
+      }
     }
   }
   flow.init_vertices();
@@ -118,15 +163,43 @@ bool best_expansion(const Potts_problem& p, const std::vector<double>& around, s
   auto map = boost::make_iterator_property_map(moved.begin(), boost::typed_identity_property_map<std::size_t>());
   for(std::size_t i = 0; i < vertex_of.size(); ++i)
     flow.update(map, vertex, i, i, alpha);
+
+  // the vertices that take alpha, and the exact change of energy: their
+  // data terms and the edges around them (an edge between two of them once)
+  std::vector<std::size_t> taken;
   for(std::size_t i = 0; i < vertex_of.size(); ++i)
     if(moved[i] == alpha)
-      l[vertex_of[i]] = alpha;
-  return true;
+      taken.push_back(vertex_of[i]);
+  for(const std::size_t v : vertex_of)
+    candidate[v] = none;
+  for(const std::size_t v : taken)
+    candidate[v] = 0; // marks the vertices that move
+  for(const std::size_t v : taken)
+  {
+    delta += p.cost[v * p.labels + alpha] - p.cost[v * p.labels + l[v]];
+    for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
+    {
+      const std::size_t u = adjacency.neighbour[j].first;
+      const double w = adjacency.neighbour[j].second;
+      const bool u_moves = candidate[u] != none;
+      if(u_moves && u < v)
+        continue;
+      const std::size_t u_after = u_moves ? alpha : l[u];
+      delta += (u_after != alpha ? w : 0.) - (l[u] != l[v] ? w : 0.);
+    }
+  }
+  for(const std::size_t v : taken)
+    candidate[v] = none;
+  return taken;
 }
 
 // Expansion moves over every label, sweep after sweep, each kept only when
-// it lowers the energy (evaluated exactly, not read off the flow), until a
-// whole sweep changes nothing. Deterministic. Returns the final energy.
+// it lowers the energy, until a whole sweep changes nothing. The change of
+// energy of a move is evaluated exactly over the vertices it moves, not
+// read off the flow. A label's move is run again only when a vertex that
+// may take it, or a neighbour of one, changed label since its last run:
+// otherwise its max-flow problem, and so its answer, would be the same.
+// Deterministic. Returns the final energy.
 template <typename MaxFlow>
 double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l)
 {
@@ -134,28 +207,40 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l)
   if(p.vertices == 0 || p.labels < 2)
     return energy;
   const double tolerance = 1e-12;
-  std::vector<double> around(p.vertices, 0.);
-  for(std::size_t e = 0; e < p.edges.size(); ++e)
-  {
-    around[p.edges[e].first] += p.weights[e];
-    around[p.edges[e].second] += p.weights[e];
-  }
+  const Potts_adjacency adjacency(p);
+  std::vector<std::size_t> candidate(p.vertices, std::size_t(-1));
+  std::vector<char> dirty(p.labels, 1);
+  const auto touch = [&](std::size_t v) {
+    for(std::size_t c = 0; c < p.labels; ++c)
+      if(std::isfinite(p.cost[v * p.labels + c]))
+        dirty[c] = 1;
+  };
   bool improved = true;
   while(improved)
   {
     improved = false;
     for(std::size_t alpha = 0; alpha < p.labels; ++alpha)
     {
-      std::vector<std::size_t> next = l;
-      if(!best_expansion<MaxFlow>(p, around, next, alpha))
+      if(!dirty[alpha])
         continue;
-      const double e = p.energy(next);
-      if(e < energy - tolerance * std::abs(energy))
+      dirty[alpha] = 0;
+      double delta = 0.;
+      const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta);
+      if(taken.empty() || !(delta < -tolerance * std::abs(energy)))
+        continue;
+      energy += delta;
+      for(const std::size_t v : taken)
+        l[v] = alpha;
+      // the moves of the other labels near the vertices that moved must be
+      // run again; alpha's own cannot improve on itself
+      for(const std::size_t v : taken)
       {
-        energy = e;
-        l.swap(next);
-        improved = true;
+        touch(v);
+        for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
+          touch(adjacency.neighbour[j].first);
       }
+      dirty[alpha] = 0;
+      improved = true;
     }
   }
   return energy;
