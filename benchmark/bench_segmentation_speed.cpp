@@ -301,6 +301,11 @@ int usage(const char* program)
 int main(int argc, char** argv)
 {
   const std::vector<std::string> args(argv + 1, argv + argc);
+#ifdef __GLIBC__
+  // the allocator setting of the spectralseg tool (tools/spectralseg/main.cpp),
+  // for every method, CGAL's included
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+#endif
   if(args.size() == 1 && args[0] == "--methods")
   {
     std::printf("spectralseg\n");
