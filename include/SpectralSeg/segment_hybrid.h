@@ -69,11 +69,6 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
                                      std::vector<int>& labels, std::size_t min_segments, double limit,
                                      double min_area_fraction)
 {
-  const std::size_t n = graph.number_of_faces();
-  std::map<int, int> dense;
-  for(int& l : labels)
-    l = dense.emplace(l, int(dense.size())).first->second;
-  const std::size_t s = dense.size();
   // mesh means, weighted by edge length
   double length = 0., concave = 0., metric = 0.;
   for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
@@ -85,92 +80,14 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
   }
   const double mean_concave = length > 0. ? concave / length : 0.;
   const double mean_metric = length > 0. ? metric / length : 0.;
-  struct Boundary
-  {
-    double length = 0., concave = 0., metric = 0.;
-  };
-  std::vector<std::map<std::size_t, Boundary>> boundary(s);
-  for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
-  {
-    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
-    const std::size_t a = std::size_t(labels[e.face[0]]), b = std::size_t(labels[e.face[1]]);
-    if(a == b)
-      continue;
-    for(Boundary* x : {&boundary[a][b], &boundary[b][a]})
-    {
-      x->length += e.length;
-      x->concave += e.concave ? e.length * e.normal_angle : 0.;
-      x->metric += e.length * weights[d];
-    }
-  }
   // a flat or convex mesh (or a zero metric) gives no contrast: such
   // boundaries are weak
-  const auto strength = [&](const Boundary& x) {
-    const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
-    const double m = mean_metric > 0. ? x.metric / x.length / mean_metric : 0.;
-    return c * m;
-  };
-  std::vector<double> area(s, 0.);
-  double total_area = 0.;
-  for(std::size_t f = 0; f < n; ++f)
-  {
-    area[std::size_t(labels[f])] += graph.geometry().areas[f];
-    total_area += graph.geometry().areas[f];
-  }
-  const double small = min_area_fraction * total_area;
-  std::vector<std::size_t> target(s);
-  for(std::size_t i = 0; i < s; ++i)
-    target[i] = i;
-  for(std::size_t count = s; count > min_segments; --count)
-  {
-    double cheapest = std::numeric_limits<double>::infinity();
-    std::size_t wa = s, wb = s;
-    for(std::size_t a = 0; a < s; ++a)
-      for(const auto& nb : boundary[a])
-      {
-        const std::size_t b = nb.first;
-        if(b < a || nb.second.length <= 0.)
-          continue;
-        double cost;
-        if(std::min(area[a], area[b]) < small)
-          cost = -1. + std::min(area[a], area[b]) / small; // in [-1, 0): before every boundary
-        else
-        {
-          cost = strength(nb.second);
-          if(cost >= limit)
-            continue;
-        }
-        if(cost < cheapest) // strict: ties go to the smallest labels
-        {
-          cheapest = cost;
-          wa = a;
-          wb = b;
-        }
-      }
-    if(wa == s)
-      break;
-    boundary[wa].erase(wb);
-    for(const auto& nb : boundary[wb])
-    {
-      if(nb.first == wa)
-        continue;
-      Boundary& x = boundary[wa][nb.first];
-      x.length += nb.second.length;
-      x.concave += nb.second.concave;
-      x.metric += nb.second.metric;
-      boundary[nb.first].erase(wb);
-      boundary[nb.first][wa] = x;
-    }
-    boundary[wb].clear();
-    area[wa] += area[wb];
-    for(std::size_t& t : target)
-      if(t == wb)
-        t = wa;
-  }
-  std::map<int, int> renumber;
-  for(int& l : labels)
-    l = renumber.emplace(int(target[std::size_t(l)]), int(renumber.size())).first->second;
-  return renumber.size();
+  return Refinement::internal::merge_cheapest_boundaries(
+    graph, weights, labels, min_segments, min_area_fraction, [&](const Refinement::internal::Segment_boundary& x) {
+      const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
+      const double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
+      return c * m < limit ? c * m : std::numeric_limits<double>::infinity();
+    });
 }
 
 } // namespace internal

@@ -17,6 +17,112 @@
 namespace SpectralSeg {
 namespace Refinement {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// What a merge knows of the boundary between two segments: its length and
+// the length-weighted sums of the concave dihedral angle and of a per-edge
+// weight along it.
+struct Segment_boundary
+{
+  double length = 0., concave = 0., weight = 0.;
+};
+
+// Merges adjacent segments, cheapest boundary first: segments under
+// `min_area_fraction` of the area first (smallest first, whatever their
+// boundary), then the pair whose boundary has the lowest `cost(boundary)`,
+// while it is finite and more than `min_segments` are left. `weights` may be
+// empty (then Segment_boundary::weight is 0). Ties go to the pair with the
+// smallest labels. Labels are renumbered 0 .. count-1 by their smallest
+// face; returns the number of segments.
+template <typename Cost>
+std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
+                                      std::vector<int>& labels, std::size_t min_segments, double min_area_fraction,
+                                      const Cost& cost)
+{
+  const std::size_t n = graph.number_of_faces();
+  // dense labels 0 .. s-1 in order of first face
+  std::map<int, int> dense;
+  for(int& l : labels)
+    l = dense.emplace(l, int(dense.size())).first->second;
+  const std::size_t s = dense.size();
+  // per segment: neighbour -> boundary; sparse, since a mesh with many
+  // components has many segments
+  std::vector<std::map<std::size_t, Segment_boundary>> boundary(s);
+  for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
+  {
+    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
+    const std::size_t a = std::size_t(labels[e.face[0]]), b = std::size_t(labels[e.face[1]]);
+    if(a == b)
+      continue;
+    for(Segment_boundary* x : {&boundary[a][b], &boundary[b][a]})
+    {
+      x->length += e.length;
+      x->concave += e.concave ? e.length * e.normal_angle : 0.;
+      x->weight += weights.empty() ? 0. : e.length * weights[d];
+    }
+  }
+  std::vector<std::size_t> target(s); // what each dense label became
+  for(std::size_t i = 0; i < s; ++i)
+    target[i] = i;
+  std::vector<double> area(s, 0.);
+  double total_area = 0.;
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    area[std::size_t(labels[f])] += graph.geometry().areas[f];
+    total_area += graph.geometry().areas[f];
+  }
+  const double small = min_area_fraction * total_area;
+  for(std::size_t count = s; count > min_segments; --count)
+  {
+    double cheapest = std::numeric_limits<double>::infinity();
+    std::size_t wa = s, wb = s;
+    for(std::size_t a = 0; a < s; ++a)
+      for(const auto& nb : boundary[a]) // merged segments have no neighbours left
+      {
+        const std::size_t b = nb.first;
+        if(b < a || nb.second.length <= 0.)
+          continue;
+        const double c = std::min(area[a], area[b]) < small
+                           ? -1. + std::min(area[a], area[b]) / small // in [-1, 0): before every boundary
+                           : cost(nb.second);
+        if(c < cheapest) // strict: ties go to the smallest labels
+        {
+          cheapest = c;
+          wa = a;
+          wb = b;
+        }
+      }
+    if(wa == s)
+      break; // no two segments touch, or every boundary is too strong
+    // b joins a: b's boundaries become a's
+    boundary[wa].erase(wb);
+    for(const auto& nb : boundary[wb])
+    {
+      if(nb.first == wa)
+        continue;
+      Segment_boundary& x = boundary[wa][nb.first];
+      x.length += nb.second.length;
+      x.concave += nb.second.concave;
+      x.weight += nb.second.weight;
+      boundary[nb.first].erase(wb);
+      boundary[nb.first][wa] = x;
+    }
+    boundary[wb].clear();
+    area[wa] += area[wb];
+    for(std::size_t& t : target)
+      if(t == wb)
+        t = wa;
+  }
+  std::map<int, int> renumber;
+  for(int& l : labels)
+    l = renumber.emplace(int(target[std::size_t(l)]), int(renumber.size())).first->second;
+  return renumber.size();
+}
+
+} // namespace internal
+/// \endcond
+
 /// \ingroup PkgSpectralSegRefinement
 /// \brief Merges adjacent segments, weakest boundary first, until at most
 /// `k` segments are left; returns the number of segments.
@@ -49,92 +155,14 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
                                             double strength_limit = std::numeric_limits<double>::infinity(),
                                             double min_area_fraction = 0.)
 {
-  const std::size_t n = graph.number_of_faces();
-  if(labels.size() != n || weights.size() != graph.number_of_edges())
-    throw Invalid_input("merge_weakest_boundaries: expected " + std::to_string(n) + " labels and " +
-                        std::to_string(graph.number_of_edges()) + " weights");
-  // dense labels 0 .. s-1 in order of first face
-  std::map<int, int> dense;
-  for(int& l : labels)
-    l = dense.emplace(l, int(dense.size())).first->second;
-  const std::size_t s = dense.size();
-  // per segment: neighbour -> (shared boundary length, length-weighted weight
-  // sum); sparse, since a mesh with many components has many segments
-  struct Boundary
-  {
-    double length = 0., strength = 0.;
-  };
-  std::vector<std::map<std::size_t, Boundary>> boundary(s);
-  for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
-  {
-    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
-    const std::size_t a = std::size_t(labels[e.face[0]]), b = std::size_t(labels[e.face[1]]);
-    if(a == b)
-      continue;
-    for(Boundary* x : {&boundary[a][b], &boundary[b][a]})
-    {
-      x->length += e.length;
-      x->strength += e.length * weights[d];
-    }
-  }
-  std::vector<std::size_t> target(s); // what each dense label became
-  for(std::size_t i = 0; i < s; ++i)
-    target[i] = i;
-  std::vector<double> area(s, 0.);
-  double total_area = 0.;
-  for(std::size_t f = 0; f < n; ++f)
-  {
-    area[std::size_t(labels[f])] += graph.geometry().areas[f];
-    total_area += graph.geometry().areas[f];
-  }
-  const double small = min_area_fraction * total_area;
-  for(std::size_t count = s; count > k; --count)
-  {
-    double cheapest = std::numeric_limits<double>::infinity();
-    std::size_t wa = s, wb = s;
-    for(std::size_t a = 0; a < s; ++a)
-      for(const auto& nb : boundary[a]) // merged segments have no neighbours left
-      {
-        const std::size_t b = nb.first;
-        if(b < a || nb.second.length <= 0.)
-          continue;
-        const double mean = nb.second.strength / nb.second.length;
-        double cost = mean;
-        if(std::min(area[a], area[b]) < small) // small segments go first, smallest first
-          cost = -1. + std::min(area[a], area[b]) / small;
-        else if(mean >= strength_limit)
-          continue;
-        if(cost < cheapest)
-        {
-          cheapest = cost;
-          wa = a;
-          wb = b;
-        }
-      }
-    if(wa == s)
-      break; // no two segments touch, or every boundary is strong enough
-    // b joins a: b's boundaries become a's
-    boundary[wa].erase(wb);
-    for(const auto& nb : boundary[wb])
-    {
-      if(nb.first == wa)
-        continue;
-      Boundary& x = boundary[wa][nb.first];
-      x.length += nb.second.length;
-      x.strength += nb.second.strength;
-      boundary[nb.first].erase(wb);
-      boundary[nb.first][wa] = x;
-    }
-    boundary[wb].clear();
-    area[wa] += area[wb];
-    for(std::size_t& t : target)
-      if(t == wb)
-        t = wa;
-  }
-  std::map<int, int> renumber;
-  for(int& l : labels)
-    l = renumber.emplace(int(target[std::size_t(l)]), int(renumber.size())).first->second;
-  return renumber.size();
+  if(labels.size() != graph.number_of_faces() || weights.size() != graph.number_of_edges())
+    throw Invalid_input("merge_weakest_boundaries: expected " + std::to_string(graph.number_of_faces()) +
+                        " labels and " + std::to_string(graph.number_of_edges()) + " weights");
+  return internal::merge_cheapest_boundaries(
+    graph, weights, labels, k, min_area_fraction, [strength_limit](const internal::Segment_boundary& b) {
+      const double mean = b.weight / b.length;
+      return mean >= strength_limit ? std::numeric_limits<double>::infinity() : mean;
+    });
 }
 
 /// \ingroup PkgSpectralSegRefinement
