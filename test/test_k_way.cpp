@@ -536,3 +536,70 @@ TEST_CASE("banded graph cut: a face only takes the label of a segment whose boun
   }
   INFO("changed " << changed);
 }
+
+TEST_CASE("kmeans skips points by bounds and still gives Lloyd's labels", "[kmeans]")
+{
+  // 3,000 points in 5 dimensions around 12 centres, pseudo-random
+  const std::size_t n = 3000, dims = 5, k = 12;
+  std::uint32_t state = 777u;
+  const auto next = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  };
+  Eigen::MatrixXd points(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(dims));
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < dims; ++j)
+      points(Eigen::Index(i), Eigen::Index(j)) = double((i % 7) * (j + 1) % 5) + 1.5 * next();
+  std::vector<std::size_t> seeds;
+  for(std::size_t c = 0; c < k; ++c)
+    seeds.push_back(c * 97);
+  const Clustering::Kmeans_result fast = Clustering::kmeans(points, k, seeds, 300, Execution(2));
+  // Lloyd's algorithm, every distance every round
+  Eigen::MatrixXd centroids(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(dims));
+  for(std::size_t c = 0; c < k; ++c)
+    centroids.row(Eigen::Index(c)) = points.row(Eigen::Index(seeds[c]));
+  std::vector<int> labels(n, -1);
+  std::size_t rounds = 0;
+  for(; rounds < 300; ++rounds)
+  {
+    bool changed = false;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      int best = 0;
+      double best_d = std::numeric_limits<double>::infinity();
+      for(std::size_t c = 0; c < k; ++c)
+      {
+        double d = 0.;
+        for(std::size_t j = 0; j < dims; ++j)
+        {
+          const double t = points(Eigen::Index(i), Eigen::Index(j)) - centroids(Eigen::Index(c), Eigen::Index(j));
+          d += t * t;
+        }
+        if(d < best_d)
+        {
+          best_d = d;
+          best = int(c);
+        }
+      }
+      changed = changed || labels[i] != best;
+      labels[i] = best;
+    }
+    if(!changed)
+      break;
+    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(Eigen::Index(k), Eigen::Index(dims));
+    std::vector<double> count(k, 0.);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      sum.row(labels[i]) += points.row(Eigen::Index(i));
+      count[std::size_t(labels[i])] += 1.;
+    }
+    for(std::size_t c = 0; c < k; ++c)
+      if(count[c] > 0.)
+        centroids.row(Eigen::Index(c)) = sum.row(Eigen::Index(c)) / count[c];
+  }
+  CHECK(rounds > 2);
+  CHECK(fast.iterations == rounds);
+  CHECK(fast.labels == labels);
+  CHECK(fast.converged);
+  CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(1)).labels == fast.labels);
+}

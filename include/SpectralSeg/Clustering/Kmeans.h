@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -107,33 +109,75 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
     for(std::size_t j = 0; j < dims; ++j)
       p[i * dims + j] = points(Eigen::Index(i), Eigen::Index(j));
   std::vector<char> changed(n, 0);
+  const auto squared_distance = [dims](const double* x, const double* y) {
+    double d = 0.;
+    if(dims > 0)
+    {
+      d = (x[0] - y[0]) * (x[0] - y[0]);
+      for(std::size_t j = 1; j < dims; ++j)
+        d += (x[j] - y[j]) * (x[j] - y[j]);
+    }
+    return d;
+  };
+  // Hamerly's bounds: an upper bound of each point's distance to its
+  // centroid and a lower bound of its distance to every other one; a point
+  // whose upper bound is below both its lower bound and half the distance
+  // from its centroid to the nearest other is provably still nearest its
+  // centroid, and is skipped. A relative margin covers the rounding of the
+  // bounds, so the labels are exactly those of Lloyd's full assignment.
+  const double margin = 1. + 1e-9;
+  std::vector<double> upper(n, std::numeric_limits<double>::infinity()), lower(n, 0.);
+  std::vector<double> half_gap(kk), moved(kk);
+  std::vector<double> previous(kk * dims);
   for(r.iterations = 0; r.iterations < max_iterations; ++r.iterations)
   {
     for(std::size_t c = 0; c < kk; ++c)
       for(std::size_t j = 0; j < dims; ++j)
         centre[c * dims + j] = r.centroids(Eigen::Index(c), Eigen::Index(j));
+    for(std::size_t c = 0; c < kk; ++c)
+    {
+      double nearest = std::numeric_limits<double>::infinity();
+      for(std::size_t o = 0; o < kk; ++o)
+        if(o != c)
+          nearest = std::min(nearest, squared_distance(centre.data() + c * dims, centre.data() + o * dims));
+      half_gap[c] = 0.5 * std::sqrt(nearest);
+    }
     ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t i) {
-      int best = 0;
-      double best_d = std::numeric_limits<double>::infinity();
       const double* x = p.data() + i * dims;
+      const int own = r.labels[i];
+      if(own >= 0)
+      {
+        const double bound = std::max(half_gap[std::size_t(own)], lower[i]);
+        if(upper[i] * margin < bound)
+        {
+          changed[i] = 0;
+          return;
+        }
+        upper[i] = std::sqrt(squared_distance(x, centre.data() + std::size_t(own) * dims));
+        if(upper[i] * margin < bound)
+        {
+          changed[i] = 0;
+          return;
+        }
+      }
+      int best = 0;
+      double best_d = std::numeric_limits<double>::infinity(), second_d = std::numeric_limits<double>::infinity();
       for(std::size_t c = 0; c < kk; ++c)
       {
-        const double* y = centre.data() + c * dims;
-        double d = 0.;
-        if(dims > 0)
-        {
-          d = (x[0] - y[0]) * (x[0] - y[0]);
-          for(std::size_t j = 1; j < dims; ++j)
-            d += (x[j] - y[j]) * (x[j] - y[j]);
-        }
+        const double d = squared_distance(x, centre.data() + c * dims);
         if(d < best_d)
         {
+          second_d = best_d;
           best_d = d;
           best = int(c);
         }
+        else if(d < second_d)
+          second_d = d;
       }
-      changed[i] = r.labels[i] != best;
+      changed[i] = own != best;
       r.labels[i] = best;
+      upper[i] = std::sqrt(best_d);
+      lower[i] = std::sqrt(second_d);
     });
     bool any = false;
     for(char c : changed)
@@ -157,6 +201,25 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
       if(count[c] > 0)
         for(std::size_t j = 0; j < dims; ++j)
           r.centroids(Eigen::Index(c), Eigen::Index(j)) = sum[c * dims + j] / double(count[c]);
+    // the bounds follow the centroids' moves
+    std::size_t farthest = 0;
+    for(std::size_t c = 0; c < kk; ++c)
+    {
+      for(std::size_t j = 0; j < dims; ++j)
+        previous[c * dims + j] = r.centroids(Eigen::Index(c), Eigen::Index(j));
+      moved[c] = std::sqrt(squared_distance(previous.data() + c * dims, centre.data() + c * dims));
+      if(moved[c] > moved[farthest])
+        farthest = c;
+    }
+    double second = 0.;
+    for(std::size_t c = 0; c < kk; ++c)
+      if(c != farthest)
+        second = std::max(second, moved[c]);
+    ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t i) {
+      const std::size_t own = std::size_t(r.labels[i]);
+      upper[i] += moved[own];
+      lower[i] -= own == farthest ? second : moved[farthest];
+    });
   }
   return r;
 }
