@@ -125,6 +125,18 @@ inline Boost_max_flow_backend* boost_max_flow_backends()
   return table;
 }
 
+// The area of each segment, indexed by label.
+inline std::vector<double> segment_areas(const Dual_graph& graph, const std::vector<int>& labels)
+{
+  int count = 0;
+  for(int l : labels)
+    count = std::max(count, l + 1);
+  std::vector<double> area(std::size_t(count), 0.);
+  for(std::size_t f = 0; f < labels.size(); ++f)
+    area[std::size_t(labels[f])] += graph.geometry().areas[f];
+  return area;
+}
+
 // 1 for the faces within `width` times the square root of their segment's
 // area of the segment's boundary (geodesic distance between face centres
 // over the dual graph, from the faces on the boundary) and in the half of
@@ -132,12 +144,7 @@ inline Boost_max_flow_backend* boost_max_flow_backends()
 inline std::vector<char> boundary_band(const Dual_graph& graph, const std::vector<int>& labels, double width)
 {
   const std::size_t n = graph.number_of_faces();
-  int count = 0;
-  for(int l : labels)
-    count = std::max(count, l + 1);
-  std::vector<double> area(std::size_t(count), 0.);
-  for(std::size_t f = 0; f < n; ++f)
-    area[std::size_t(labels[f])] += graph.geometry().areas[f];
+  const std::vector<double> area = segment_areas(graph, labels);
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
   typedef std::pair<double, Dual_graph::size_type> Item;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
@@ -150,7 +157,7 @@ inline std::vector<char> boundary_band(const Dual_graph& graph, const std::vecto
           queue.emplace(0., f);
         }
   std::vector<char> out(n, 0);
-  std::vector<double> deepest(std::size_t(count), 0.);
+  std::vector<double> deepest(area.size(), 0.);
   while(!queue.empty())
   {
     const Item top = queue.top();
@@ -195,12 +202,7 @@ inline Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& 
                                const std::vector<char>& in_band, double width)
 {
   const std::size_t n = graph.number_of_faces();
-  int count = 0;
-  for(int l : labels)
-    count = std::max(count, l + 1);
-  std::vector<double> area(std::size_t(count), 0.);
-  for(std::size_t f = 0; f < n; ++f)
-    area[std::size_t(labels[f])] += graph.geometry().areas[f];
+  const std::vector<double> area = segment_areas(graph, labels);
   // the band faces on each label's boundary, as (label across, face)
   std::vector<std::pair<int, Dual_graph::size_type>> sources;
   for(const Dual_graph::Edge& e : graph.edges())
@@ -363,7 +365,7 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   internal::Potts_problem problem;
   problem.labels = k;
   std::vector<std::size_t> face_of_variable;
-  std::vector<double> face_cost(k);
+  std::vector<double> face_cost(k), within_reach;
   for(std::size_t f = 0; f < n; ++f)
   {
     if(labels[f] < 0 || std::size_t(labels[f]) >= k)
@@ -383,11 +385,11 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
     if(options.band_width > 0.)
     {
       // only the own label and those within reach
-      for(std::size_t c = 0; c < k; ++c)
-        if(c != own && std::find(reach.reachable.begin() + std::ptrdiff_t(reach.offset[f]),
-                                 reach.reachable.begin() + std::ptrdiff_t(reach.offset[f + 1]),
-                                 int(c)) == reach.reachable.begin() + std::ptrdiff_t(reach.offset[f + 1]))
-          face_cost[c] = unreachable;
+      within_reach.assign(k, unreachable);
+      within_reach[own] = face_cost[own];
+      for(std::size_t i = reach.offset[f]; i < reach.offset[f + 1]; ++i)
+        within_reach[std::size_t(reach.reachable[i])] = face_cost[std::size_t(reach.reachable[i])];
+      face_cost.swap(within_reach);
     }
     bool decided = options.fix_decided_faces;
     for(std::size_t c = 0; c < k && decided; ++c)

@@ -239,7 +239,7 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l)
         for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
           touch(adjacency.neighbour[j].first);
       }
-      dirty[alpha] = 0;
+      dirty[alpha] = 0; // touch() marked it too
       improved = true;
     }
   }
