@@ -32,6 +32,7 @@
 //   --mu M         graph-cut smoothness (default 10; thesis 0.3)   --mean-edge | --longest-edge (thesis)
 //   --band B       graph-cut band width (default 0.4; 0: every face may move, the thesis)
 //   --crease-angle A  split clusters along closed concave creases of A degrees (default 30; 0: off)
+//   --merge-size-exponent E  the merge's area factor exponent (default 0.1; 0: the strength alone)
 //   --max-min-seeds
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
@@ -112,6 +113,7 @@ struct Options
   int mean_edge = -1;      // graph cut: edge lengths over the mean (1) or the longest (0) edge length (< 0: default)
   double band = -1;        // graph-cut band width (< 0: the default)
   double crease_angle = -1; // crease split angle in degrees (< 0: the default)
+  double merge_size_exponent = -1; // < 0: the default
   bool max_min_seeds = false; // K-means seeded by max-min in the embedding instead of the samples
 };
 
@@ -229,6 +231,8 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
     ko.graph_cut.band_width = o.band;
   if(o.crease_angle >= 0.)
     ko.crease_angle = o.crease_angle;
+  if(o.merge_size_exponent >= 0.)
+    ko.merge_size_exponent = o.merge_size_exponent;
   ko.seed_with_samples = !o.max_min_seeds;
   ko.embedding.seed = o.seed;
   if(o.extra_clusters >= 0)
@@ -413,6 +417,8 @@ int main(int argc, char** argv)
       o.band = std::stod(next());
     else if(a == "--crease-angle")
       o.crease_angle = std::stod(next());
+    else if(a == "--merge-size-exponent")
+      o.merge_size_exponent = std::stod(next());
     else if(a == "--thesis")
       o.thesis = true;
     else if(a == "--mu")

@@ -146,6 +146,37 @@ TEST_CASE("segments merge across their weakest boundary first", "[k_way][merge]"
   CHECK(labels[11] == labels[10]);
   CHECK(labels[7] != labels[8]);
 
+  // the area factor: of two boundaries about as strong, the one around the
+  // smaller part goes first. Segments of 6, 4 and 2 faces; the 6|4 boundary
+  // is a little weaker than the 4|2 one.
+  std::vector<int> sizes(12);
+  for(std::size_t f = 0; f < 12; ++f)
+    sizes[f] = f < 6 ? 0 : f < 10 ? 1 : 2;
+  std::vector<double> ws(g.number_of_edges(), 1.);
+  for(std::size_t d = 0; d < ws.size(); ++d)
+  {
+    const auto& e = g.edge(Dual_graph::size_type(d));
+    const int a = sizes[e.face[0]], b = sizes[e.face[1]];
+    if(a != b)
+      ws[d] = std::min(a, b) == 0 ? 0.5 : 0.55;
+  }
+  labels = sizes;
+  CHECK(Refinement::merge_weakest_boundaries(g, ws, labels, 2) == 2);
+  CHECK(labels[0] == labels[6]); // the strength alone: 6|4 goes
+  CHECK(labels[6] != labels[10]);
+  labels = sizes;
+  // 0.5 (4/12)^0.5 = 0.29 against 0.55 (2/12)^0.5 = 0.22: 4|2 goes
+  CHECK(Refinement::merge_weakest_boundaries(g, ws, labels, 2, std::numeric_limits<double>::infinity(), 0., 0.5) == 2);
+  CHECK(labels[0] != labels[6]);
+  CHECK(labels[6] == labels[10]);
+  labels = sizes;
+  // the limit applies to the strength before the factor: both boundaries stay
+  CHECK(Refinement::merge_weakest_boundaries(g, ws, labels, 2, 0.45, 0., 0.5) == 3);
+  CHECK_THROWS_AS(Refinement::merge_weakest_boundaries(g, ws, labels, 2, 1., 0., -0.1), Invalid_input);
+  CHECK_THROWS_AS(
+    Refinement::merge_weakest_boundaries(g, ws, labels, 2, 1., 0., std::numeric_limits<double>::quiet_NaN()),
+    Invalid_input);
+
   // a triangle soup: every face its own component, so every face its own
   // segment; nothing can merge, and the bookkeeping stays sparse (a dense
   // segment-by-segment table would need 2 x 20,000^2 doubles here)

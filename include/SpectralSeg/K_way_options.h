@@ -64,6 +64,12 @@ struct Basic_K_way_options
   /// ear keeps the ear while the smooth hip joint merges the leg into the
   /// body
   double merge_min_area_fraction = 0.005;
+  /// the merge's boundary strength is multiplied by the area fraction of
+  /// the pair's smaller segment to this power (our addition;
+  /// `Refinement::merge_weakest_boundaries()`): of two boundaries about as
+  /// strong, the one around the smaller part is merged first; 0: the
+  /// strength alone
+  double merge_size_exponent = 0.1;
   /// with extra clusters (our addition): before the merge, each K-means
   /// cluster is split along the closed loops of concave creases of at least
   /// this dihedral angle, in degrees (`Refinement::crease_regions()`), so
@@ -79,6 +85,7 @@ struct Basic_K_way_options
     o.extra_clusters = 0;
     o.graph_cut = Refinement::Graph_cut_options();
     o.crease_angle = 0.;
+    o.merge_size_exponent = 0.;
     return o;
   }
 
@@ -96,6 +103,7 @@ struct Basic_K_way_options
     o.extra_clusters = extra_clusters;
     o.merge_strength_limit = merge_strength_limit;
     o.merge_min_area_fraction = merge_min_area_fraction;
+    o.merge_size_exponent = merge_size_exponent;
     o.crease_angle = crease_angle;
     return o;
   }

@@ -72,7 +72,7 @@ void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_fina
     if(concave.empty())
       concave = Refinement::concave_angle_weights(graph.graph());
     return Refinement::merge_weakest_boundaries(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
-                                                options.merge_min_area_fraction);
+                                                options.merge_min_area_fraction, options.merge_size_exponent);
   };
   Eigen::MatrixXd proxies = r.clusters.centroids;
   bool merged = false;

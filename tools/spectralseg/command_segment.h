@@ -45,6 +45,7 @@ struct Segment_options
   std::size_t extra_clusters = SpectralSeg::K_way_options().extra_clusters;
   std::string graph_cut = "banded";
   double crease_angle = SpectralSeg::K_way_options().crease_angle;
+  double merge_size_exponent = SpectralSeg::K_way_options().merge_size_exponent;
   double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
   std::string labels, out_mesh, png, json;
   bool binary = false;   // PLY outputs in binary
@@ -85,6 +86,11 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
                   "this many degrees before merging (0: off)")
     ->capture_default_str()
     ->check(Finite_range(0., 180.));
+  cmd->add_option("--merge-size-exponent", o.merge_size_exponent,
+                  "with extra clusters: the merge multiplies a boundary's strength by the area fraction of the "
+                  "smaller of its two segments to this power, so that small parts go before large ones (0: off)")
+    ->capture_default_str()
+    ->check(Finite_range(0., 10.));
   cmd->add_option("--graph-cut-backend", o.graph_cut_backend,
                   "max-flow code of the graph cut: maxflow (fastest, GPL), boost-csr or boost-list (LGPL)")
     ->check(CLI::IsMember({"default", "maxflow", "boost-csr", "boost-list"}))
@@ -294,6 +300,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   if(o.graph_cut == "thesis")
     options.graph_cut = SpectralSeg::Refinement::Graph_cut_options();
   options.crease_angle = o.crease_angle;
+  options.merge_size_exponent = o.merge_size_exponent;
   if(o.graph_cut_backend == "maxflow")
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::maxflow;
   else if(o.graph_cut_backend == "boost-csr")

@@ -9,6 +9,7 @@
 #include <SpectralSeg/exceptions.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <string>
@@ -30,7 +31,8 @@ struct Segment_boundary
 
 // Merges adjacent segments, cheapest boundary first: segments under
 // `min_area_fraction` of the area first (smallest first, whatever their
-// boundary), then the pair whose boundary has the lowest `cost(boundary)`,
+// boundary), then the pair with the lowest `cost(boundary, smaller)`, where
+// `smaller` is the area of the pair's smaller segment over the mesh's area,
 // while it is finite and more than `min_segments` are left. `weights` may be
 // empty (then Segment_boundary::weight is 0). Ties go to the pair with the
 // smallest labels. Labels are renumbered 0 .. count-1 by their smallest
@@ -85,7 +87,7 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
           continue;
         const double c = std::min(area[a], area[b]) < small
                            ? -1. + std::min(area[a], area[b]) / small // in [-1, 0): before every boundary
-                           : cost(nb.second);
+                           : cost(nb.second, std::min(area[a], area[b]) / total_area);
         if(c < cheapest) // strict: ties go to the smallest labels
         {
           cheapest = c;
@@ -134,7 +136,12 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
 /// and the concave junction of a limb is strong, so repeatedly joining the
 /// two segments across the weakest boundary undoes the splits that K-means
 /// makes in large bodies. Any other per-edge weight can serve as the
-/// boundary strength (doc/benchmarks.md compares some). Ties go to the pair with the smallest
+/// boundary strength (doc/benchmarks.md compares some). With a positive
+/// `size_exponent` the strength is multiplied by \f$a^e\f$, \f$a\f$ the
+/// area of the pair's smaller segment over the mesh's area and \f$e\f$ the
+/// exponent: of two boundaries about as strong, the one around the smaller
+/// part goes first, since giving up a small part changes less of the
+/// surface than joining two large ones. Ties go to the pair with the smallest
 /// labels, so the result is deterministic. Segments with no neighbour (whole
 /// connected components) are never merged, so more than `k` may remain.
 /// Labels are renumbered `0 .. count-1` by their smallest face.
@@ -149,19 +156,29 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
 ///        total area are merged first, smallest first, whatever their
 ///        boundary (thin flaps such as ears have sharp creases but are
 ///        rarely parts), even across a boundary above `strength_limit`
-/// \throws Invalid_input if the sizes do not match the graph
+/// \param size_exponent the exponent \f$e \ge 0\f$ of the area factor
+///        (0: the strength alone; `segment_k_way()` uses
+///        `K_way_options::merge_size_exponent`); `strength_limit` applies to
+///        the strength before the factor
+/// \throws Invalid_input if the sizes do not match the graph or
+///         `size_exponent` is negative or not a number
 inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                             std::vector<int>& labels, std::size_t k,
                                             double strength_limit = std::numeric_limits<double>::infinity(),
-                                            double min_area_fraction = 0.)
+                                            double min_area_fraction = 0., double size_exponent = 0.)
 {
   if(labels.size() != graph.number_of_faces() || weights.size() != graph.number_of_edges())
     throw Invalid_input("merge_weakest_boundaries: expected " + std::to_string(graph.number_of_faces()) +
                         " labels and " + std::to_string(graph.number_of_edges()) + " weights");
+  if(!(size_exponent >= 0.))
+    throw Invalid_input("merge_weakest_boundaries: the size exponent must be a number of at least 0");
   return internal::merge_cheapest_boundaries(
-    graph, weights, labels, k, min_area_fraction, [strength_limit](const internal::Segment_boundary& b) {
+    graph, weights, labels, k, min_area_fraction,
+    [strength_limit, size_exponent](const internal::Segment_boundary& b, double smaller) {
       const double mean = b.weight / b.length;
-      return mean >= strength_limit ? std::numeric_limits<double>::infinity() : mean;
+      if(mean >= strength_limit)
+        return std::numeric_limits<double>::infinity();
+      return size_exponent > 0. ? mean * std::pow(smaller, size_exponent) : mean;
     });
 }
 
