@@ -137,6 +137,37 @@ inline std::vector<double> segment_areas(const Dual_graph& graph, const std::vec
   return area;
 }
 
+typedef std::pair<double, Dual_graph::size_type> Distance_item;
+typedef std::priority_queue<Distance_item, std::vector<Distance_item>, std::greater<Distance_item>> Distance_queue;
+
+// Dijkstra over the dual graph (geodesic edge lengths) from the faces in
+// `queue`, whose `distance` is set: a face is reached only from a face of
+// its own segment and only when `admit(face, new_distance)` says so (admit
+// is called before the distance is lowered); `settle(face, distance)` is
+// called once per face, at its final distance.
+template <typename Admit, typename Settle>
+void dijkstra_within_segments(const Dual_graph& graph, const std::vector<int>& labels, std::vector<double>& distance,
+                              Distance_queue& queue, const Admit& admit, const Settle& settle)
+{
+  while(!queue.empty())
+  {
+    const Distance_item top = queue.top();
+    queue.pop();
+    const Dual_graph::size_type f = top.second;
+    if(top.first > distance[f])
+      continue;
+    settle(f, top.first);
+    graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type e) {
+      const double d = top.first + graph.edge(e).geodesic_length;
+      if(labels[g] == labels[f] && d < distance[g] && admit(g, d))
+      {
+        distance[g] = d;
+        queue.emplace(d, g);
+      }
+    });
+  }
+}
+
 // 1 for the faces within `width` times the square root of their segment's
 // area of the segment's boundary (geodesic distance between face centres
 // over the dual graph, from the faces on the boundary) and in the half of
@@ -146,8 +177,7 @@ inline std::vector<char> boundary_band(const Dual_graph& graph, const std::vecto
   const std::size_t n = graph.number_of_faces();
   const std::vector<double> area = segment_areas(graph, labels);
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
-  typedef std::pair<double, Dual_graph::size_type> Item;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  Distance_queue queue;
   for(const Dual_graph::Edge& e : graph.edges())
     if(labels[e.face[0]] != labels[e.face[1]])
       for(const Dual_graph::size_type f : e.face)
@@ -158,23 +188,11 @@ inline std::vector<char> boundary_band(const Dual_graph& graph, const std::vecto
         }
   std::vector<char> out(n, 0);
   std::vector<double> deepest(area.size(), 0.);
-  while(!queue.empty())
-  {
-    const Item top = queue.top();
-    queue.pop();
-    const Dual_graph::size_type f = top.second;
-    if(top.first > distance[f])
-      continue;
-    deepest[std::size_t(labels[f])] = std::max(deepest[std::size_t(labels[f])], top.first);
-    graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type e) {
-      const double d = top.first + graph.edge(e).geodesic_length;
-      if(labels[g] == labels[f] && d < distance[g])
-      {
-        distance[g] = d;
-        queue.emplace(d, g);
-      }
+  dijkstra_within_segments(
+    graph, labels, distance, queue, [](Dual_graph::size_type, double) { return true; },
+    [&](Dual_graph::size_type f, double d) {
+      deepest[std::size_t(labels[f])] = std::max(deepest[std::size_t(labels[f])], d);
     });
-  }
   // the half of each segment nearest its boundary at most: every segment
   // keeps a core
   for(std::size_t f = 0; f < n; ++f)
@@ -216,8 +234,7 @@ inline Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& 
   std::vector<std::pair<Dual_graph::size_type, int>> pairs; // (face, label it may take)
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
   std::vector<Dual_graph::size_type> touched;
-  typedef std::pair<double, Dual_graph::size_type> Item;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  Distance_queue queue;
   for(std::size_t begin = 0; begin < sources.size();)
   {
     const int across = sources[begin].first;
@@ -228,26 +245,16 @@ inline Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& 
       touched.push_back(sources[end].second);
       queue.emplace(0., sources[end].second);
     }
-    while(!queue.empty())
-    {
-      const Item top = queue.top();
-      queue.pop();
-      const Dual_graph::size_type f = top.second;
-      if(top.first > distance[f])
-        continue;
-      pairs.emplace_back(f, across);
-      graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type e) {
-        const double d = top.first + graph.edge(e).geodesic_length;
-        if(in_band[g] && labels[g] == labels[f] && d < distance[g] &&
-           d <= width * std::sqrt(area[std::size_t(labels[g])]))
-        {
-          if(distance[g] == std::numeric_limits<double>::infinity())
-            touched.push_back(g);
-          distance[g] = d;
-          queue.emplace(d, g);
-        }
-      });
-    }
+    dijkstra_within_segments(
+      graph, labels, distance, queue,
+      [&](Dual_graph::size_type g, double d) {
+        if(!in_band[g] || d > width * std::sqrt(area[std::size_t(labels[g])]))
+          return false;
+        if(distance[g] == std::numeric_limits<double>::infinity())
+          touched.push_back(g);
+        return true;
+      },
+      [&](Dual_graph::size_type f, double) { pairs.emplace_back(f, across); });
     for(Dual_graph::size_type f : touched)
       distance[f] = std::numeric_limits<double>::infinity();
     touched.clear();
