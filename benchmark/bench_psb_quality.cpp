@@ -25,7 +25,10 @@
 //   --auto-k MAX   choose k itself (segment_k_way_automatic, k in [2, MAX]) instead of k_by_model
 //   --auto-contrast C  its merge limit (boundary's mean concave angle over the mesh's, default 3)
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
-//   --extra-clusters N  K-means clusters beyond k, merged back (default 3; 0 = thesis)
+//   --extra-clusters N  K-means clusters beyond k, merged back (default 2; 0 = thesis)
+//   --alternative-extra-clusters A,B  also tried, the lowest concave normalized cut kept (default 8;
+//                  '' none)
+//   --cut-angle-scale S  concavity scale (radians) of that normalized cut (default 0.1)
 //   --seed S       start face of the Nyström sampling
 //   --thesis       the thesis's k-way method (K_way_options::thesis(): no extra clusters, its graph cut,
 //                  no crease split); the options below change single settings
@@ -97,6 +100,8 @@ struct Options
   std::string normalization = "p99"; // p99 (the library's default) or max (the thesis)
   std::size_t samples = 0;
   int extra_clusters = -1;
+  std::string alternative_extra_clusters = "-"; // "-": the default; "": none
+  double cut_angle_scale = -1;
   double auto_contrast = 3;
   bool auto_contrast_given = false;  // automatic k: merge while the weakest boundary's contrast is below this
   double auto_spectrum = 0;  // > 0: --auto-k uses choose_number_of_segments with this threshold instead
@@ -237,6 +242,16 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   ko.embedding.seed = o.seed;
   if(o.extra_clusters >= 0)
     ko.extra_clusters = std::size_t(o.extra_clusters);
+  if(o.alternative_extra_clusters != "-")
+  {
+    ko.alternative_extra_clusters.clear();
+    std::stringstream list(o.alternative_extra_clusters);
+    for(std::string item; std::getline(list, item, ',');)
+      if(!item.empty())
+        ko.alternative_extra_clusters.push_back(std::size_t(std::stoul(item)));
+  }
+  if(o.cut_angle_scale > 0)
+    ko.cut_angle_scale = o.cut_angle_scale;
   ko.embedding.samples = o.samples_factor > 0 ? static_cast<std::size_t>(o.samples_factor * double(k)) + 1 : o.samples;
   ko.embedding.method = o.sampling == "exact"   ? SpectralSeg::Embedding::Method::exact
                         : o.sampling == "nystrom" ? SpectralSeg::Embedding::Method::nystrom
@@ -440,6 +455,10 @@ int main(int argc, char** argv)
       o.seed = unsigned(std::stoul(next()));
     else if(a == "--extra-clusters")
       o.extra_clusters = std::stoi(next());
+    else if(a == "--alternative-extra-clusters")
+      o.alternative_extra_clusters = next();
+    else if(a == "--cut-angle-scale")
+      o.cut_angle_scale = std::stod(next());
     else if(a == "--samples-factor")
       o.samples_factor = std::stod(next());
     else if(a == "--vsi-fraction")

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <limits>
 #include <set>
+#include <string>
 
 namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -633,4 +634,65 @@ TEST_CASE("kmeans skips points by bounds and still gives Lloyd's labels", "[kmea
   CHECK(fast.labels == labels);
   CHECK(fast.converged);
   CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(1)).labels == fast.labels);
+}
+
+TEST_CASE("concave normalized cut: boundaries along concave creases cost less", "[k_way][choice]")
+{
+  const Star& s = star();
+  const std::size_t n = s.graph.number_of_faces();
+  // the five parts meet along concave creases; five segments by face index do not
+  std::vector<int> striped(n);
+  for(std::size_t f = 0; f < n; ++f)
+    striped[f] = int(f % 5);
+  const double parts = Refinement::concave_normalized_cut(s.graph, s.soup.face_part, 0.1);
+  const double stripes = Refinement::concave_normalized_cut(s.graph, striped, 0.1);
+  CHECK(parts > 0.);
+  CHECK(parts < 0.1 * stripes);
+  // the labels' values do not matter, one segment has no cut
+  std::vector<int> shifted = s.soup.face_part;
+  for(int& l : shifted)
+    l = 100 - 3 * l;
+  CHECK(Refinement::concave_normalized_cut(s.graph, shifted, 0.1) == Approx(parts));
+  CHECK(Refinement::concave_normalized_cut(s.graph, std::vector<int>(n, 4), 0.1) == 0.);
+  // a larger scale makes the creases count for less
+  CHECK(Refinement::concave_normalized_cut(s.graph, s.soup.face_part, 1.) > parts);
+  CHECK_THROWS_AS(Refinement::concave_normalized_cut(s.graph, std::vector<int>(n - 1, 0), 0.1), Invalid_input);
+  CHECK_THROWS_AS(Refinement::concave_normalized_cut(s.graph, striped, 0.), Invalid_input);
+  CHECK_THROWS_AS(Refinement::concave_normalized_cut(s.graph, striped, std::numeric_limits<double>::quiet_NaN()),
+                  Invalid_input);
+}
+
+TEST_CASE("k-way with alternative extra clusters keeps the result with the lower concave normalized cut",
+          "[k_way][choice]")
+{
+  const Star& s = star();
+  CHECK(K_way_options().alternative_extra_clusters.empty());
+  CHECK(K_way_options::thesis().alternative_extra_clusters.empty());
+  for(std::size_t k : {3, 5})
+  {
+    INFO("k " << k);
+    K_way_options few, many, both;
+    few.extra_clusters = 0;
+    many.extra_clusters = 6;
+    both.extra_clusters = 0;
+    both.alternative_extra_clusters = {6, 0, 6}; // repeats are tried once
+    const K_way_result a = segment_k_way(s.weighted, k, few), b = segment_k_way(s.weighted, k, many);
+    const K_way_result c = segment_k_way(s.weighted, k, both);
+    CHECK(a.extra_clusters == 0);
+    CHECK(b.extra_clusters == 6);
+    CHECK(a.normalized_cut == 0.); // one segmentation: no choice made
+    const double na = Refinement::concave_normalized_cut(s.graph, a.labels, both.cut_angle_scale);
+    const double nb = Refinement::concave_normalized_cut(s.graph, b.labels, both.cut_angle_scale);
+    const K_way_result& lower = nb < na ? b : a; // ties to the first tried
+    CHECK(c.labels == lower.labels);
+    CHECK(c.extra_clusters == lower.extra_clusters);
+    CHECK(c.normalized_cut == Approx(std::min(na, nb)));
+    CHECK(c.number_of_segments == k);
+    CHECK(c.clusters.centroids.rows() == Eigen::Index(k + c.extra_clusters));
+    // every stage timed once, the candidates' times summed
+    std::set<std::string> stages;
+    for(const auto& t : c.timings)
+      CHECK(stages.insert(t.first).second);
+    CHECK(stages.count("choice") == 1);
+  }
 }

@@ -54,8 +54,19 @@ struct Basic_K_way_options
   /// into pieces of similar spread and leaves small parts (fins, horns,
   /// fingers) unsplit; the extra clusters take those small parts and the
   /// merge joins the body pieces across their smooth seams. 0 gives the
-  /// thesis's method (`thesis()`).
+  /// thesis's method (`thesis()`). See also `alternative_extra_clusters`.
   std::size_t extra_clusters = 3;
+  /// choice of the over-segmentation (our addition): each of these numbers
+  /// of extra clusters is tried as well as `extra_clusters` (embedding,
+  /// K-means, merge and graph cut each time), and the result with the lowest
+  /// `Refinement::concave_normalized_cut()` is kept. How many clusters it
+  /// takes to give each small part its own depends on the shape; the
+  /// normalized cut prefers the result whose boundaries follow concave
+  /// creases. Empty: `extra_clusters` only, at the cost of one segmentation.
+  std::vector<std::size_t> alternative_extra_clusters;
+  /// the concavity scale \f$s\f$ (radians) of the normalized cut that
+  /// chooses the over-segmentation
+  double cut_angle_scale = 0.1;
   /// merging also stops when every boundary's mean concave angle (radians)
   /// is at least this
   double merge_strength_limit = std::numeric_limits<double>::infinity();
@@ -83,6 +94,7 @@ struct Basic_K_way_options
   {
     Basic_K_way_options o;
     o.extra_clusters = 0;
+    o.alternative_extra_clusters.clear();
     o.graph_cut = Refinement::Graph_cut_options();
     o.crease_angle = 0.;
     o.merge_size_exponent = 0.;
@@ -101,6 +113,8 @@ struct Basic_K_way_options
     o.kmeans_iterations = kmeans_iterations;
     o.seed_with_samples = seed_with_samples;
     o.extra_clusters = extra_clusters;
+    o.alternative_extra_clusters = alternative_extra_clusters;
+    o.cut_angle_scale = cut_angle_scale;
     o.merge_strength_limit = merge_strength_limit;
     o.merge_min_area_fraction = merge_min_area_fraction;
     o.merge_size_exponent = merge_size_exponent;
@@ -151,6 +165,12 @@ struct K_way_result
   Embedding::Spectral_embedding embedding;
   /// K-means result, before the graph cut
   Clustering::Kmeans_result clusters;
+  /// the number of extra clusters of the kept over-segmentation (see
+  /// `K_way_options::alternative_extra_clusters`)
+  std::size_t extra_clusters = 0;
+  /// its `Refinement::concave_normalized_cut()` when several were tried,
+  /// else 0
+  double normalized_cut = 0.;
   /// seconds spent in each stage, in order
   std::vector<std::pair<std::string, double>> timings;
 };

@@ -36,8 +36,8 @@ struct Basic_hybrid_options
 {
   /// the embedding, K-means and graph-cut settings, the affinity kernel and
   /// `merge_min_area_fraction` (0.005 by default: segments under 0.5% of the
-  /// area are merged first, whatever their boundary); `extra_clusters` and
-  /// `merge_strength_limit` are not used
+  /// area are merged first, whatever their boundary); `extra_clusters`,
+  /// `alternative_extra_clusters` and `merge_strength_limit` are not used
   Basic_K_way_options<AffinityKernel> k_way;
   /// the number of K-means clusters of the over-segmentation (default 20);
   /// at least 2

@@ -10,6 +10,7 @@
 #include <SpectralSeg/Embedding/exact_spectral_embedding.h>
 #include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
 #include <SpectralSeg/K_way_options.h>
+#include <SpectralSeg/Refinement/concave_normalized_cut.h>
 #include <SpectralSeg/Refinement/connected_segments.h>
 #include <SpectralSeg/Refinement/crease_regions.h>
 #include <SpectralSeg/Refinement/graph_cut_boundaries.h>
@@ -19,6 +20,7 @@
 #include <SpectralSeg/internal/Stage_timer.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -44,20 +46,21 @@ Embedding::Spectral_embedding embed(const Weighted_dual_graph& graph, std::size_
 }
 
 // K-means, merge (when over-segmented), graph cut and connected segments on
-// r.embedding: k clusters, k_final segments.
+// `coordinates` (columns of `embedding`): k clusters, k_final segments.
 template <typename AffinityKernel>
-void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
-             const Basic_K_way_options<AffinityKernel>& options,
-                    K_way_result& r, Stage_timer& lap, const Execution& exec)
+void cluster(const Weighted_dual_graph& graph, const Eigen::MatrixXd& coordinates,
+             const Embedding::Spectral_embedding& embedding, std::size_t k, std::size_t k_final,
+             const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
+             const Execution& exec)
 {
-  if(r.embedding.coordinates.cols() == 0)
+  if(coordinates.cols() == 0)
     throw Error("k-way segmentation: the affinity matrix has no positive eigenvalue after the first");
   exec.report("k-means", 0.);
   std::vector<std::size_t> seeds;
-  if(!r.embedding.exact && options.seed_with_samples)
-    for(std::size_t i = 0; i < k && i < r.embedding.samples.size(); ++i)
-      seeds.push_back(r.embedding.samples[i]);
-  r.clusters = Clustering::kmeans(r.embedding.coordinates, k, seeds, options.kmeans_iterations, exec);
+  if(!embedding.exact && options.seed_with_samples)
+    for(std::size_t i = 0; i < k && i < embedding.samples.size(); ++i)
+      seeds.push_back(embedding.samples[i]);
+  r.clusters = Clustering::kmeans(coordinates, k, seeds, options.kmeans_iterations, exec);
 
   r.labels = r.clusters.labels;
   exec.report("k-means", 1.);
@@ -89,11 +92,11 @@ void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_fina
     const std::size_t m = merge(labels);
     if(m <= k)
     {
-      proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), r.embedding.coordinates.cols());
+      proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), coordinates.cols());
       std::vector<double> count(m, 0.);
       for(std::size_t f = 0; f < labels.size(); ++f) // in face order: thread-independent
       {
-        proxies.row(labels[f]) += r.embedding.coordinates.row(static_cast<Eigen::Index>(f));
+        proxies.row(labels[f]) += coordinates.row(static_cast<Eigen::Index>(f));
         count[std::size_t(labels[f])] += 1.;
       }
       for(std::size_t c = 0; c < m; ++c)
@@ -106,7 +109,7 @@ void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_fina
   if(options.boundary_enhancement)
   {
     exec.report("graph cut", 0.);
-    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, proxies, r.labels, options.graph_cut);
+    Refinement::graph_cut_boundaries(graph.graph(), coordinates, proxies, r.labels, options.graph_cut);
     exec.report("graph cut", 1.);
     lap("graph cut");
   }
@@ -142,6 +145,13 @@ void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_fina
 ///    `options.graph_cut`, by default in a band along the boundaries);
 /// 5. every segment made one connected region (`Refinement::make_segments_connected()`).
 ///
+/// With `options.alternative_extra_clusters` (empty by default), steps 1-5
+/// are also run with each of those numbers of extra clusters, and the result
+/// with the lowest `Refinement::concave_normalized_cut()` is kept (ties to
+/// `extra_clusters`): its boundaries follow concave creases best.
+/// `K_way_result::extra_clusters` says which was kept. The time grows with
+/// the number of segmentations made.
+///
 /// On a mesh with more connected components than \f$m\f$ the merge cannot
 /// bring the segments down to \f$m\f$ labels; there the graph cut runs on
 /// the \f$m\f$ K-means clusters and the merge comes last.
@@ -172,11 +182,52 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     return r;
   }
 
-  const std::size_t clusters = std::min(k + options.extra_clusters, n - 1);
-  const std::size_t dims = std::min(clusters, n - 1);
-  r.embedding = internal::embed(graph, dims, options.kernel, options.embedding, exec);
-  lap("embedding");
-  internal::cluster(graph, std::max(k, clusters), k, options, r, lap, exec);
+  // the numbers of extra clusters to try, each once, in the given order
+  std::vector<std::size_t> extras{options.extra_clusters};
+  for(std::size_t e : options.alternative_extra_clusters)
+    if(std::find(extras.begin(), extras.end(), e) == extras.end())
+      extras.push_back(e);
+  if(extras.size() == 1)
+  {
+    const std::size_t clusters = std::min(k + options.extra_clusters, n - 1);
+    r.embedding = internal::embed(graph, clusters, options.kernel, options.embedding, exec);
+    lap("embedding");
+    internal::cluster(graph, r.embedding.coordinates, r.embedding, std::max(k, clusters), k, options, r, lap, exec);
+    r.extra_clusters = std::max(k, clusters) - k;
+    return r;
+  }
+  // Each over-segmentation in full (embedding, K-means, merge, graph cut);
+  // the lowest concave normalized cut is kept, ties to the first tried.
+  double lowest = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<std::string, double>> timings;
+  for(std::size_t e : extras)
+  {
+    K_way_result candidate;
+    internal::Stage_timer candidate_lap(candidate.timings);
+    const std::size_t clusters = std::min(k + e, n - 1);
+    candidate.embedding = internal::embed(graph, clusters, options.kernel, options.embedding, exec);
+    candidate_lap("embedding");
+    internal::cluster(graph, candidate.embedding.coordinates, candidate.embedding, std::max(k, clusters), k, options,
+                      candidate, candidate_lap, exec);
+    candidate.normalized_cut =
+      Refinement::concave_normalized_cut(graph.graph(), candidate.labels, options.cut_angle_scale);
+    candidate_lap("choice");
+    for(const auto& t : candidate.timings) // summed per stage, in first-seen order
+    {
+      auto it = std::find_if(timings.begin(), timings.end(), [&](const auto& x) { return x.first == t.first; });
+      if(it == timings.end())
+        timings.push_back(t);
+      else
+        it->second += t.second;
+    }
+    if(candidate.normalized_cut < lowest) // strict: ties to the first tried
+    {
+      lowest = candidate.normalized_cut;
+      candidate.extra_clusters = std::max(k, clusters) - k;
+      r = std::move(candidate);
+    }
+  }
+  r.timings = std::move(timings);
   return r;
 }
 
@@ -223,6 +274,7 @@ K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph,
     return segment_k_way(graph, 1, options.k_way, exec);
   Basic_K_way_options<AffinityKernel> o = options.k_way;
   o.extra_clusters = options.max_k - 2;
+  o.alternative_extra_clusters.clear();
   // the mesh's mean concave angle, each dual edge counted with its length
   const std::vector<double> w = Refinement::concave_angle_weights(graph.graph());
   double sum = 0., length = 0.;
