@@ -25,9 +25,8 @@
 //   --auto-k MAX   choose k itself (segment_k_way_automatic, k in [2, MAX]) instead of k_by_model
 //   --auto-contrast C  its merge limit (boundary's mean concave angle over the mesh's, default 3)
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
-//   --extra-clusters N  K-means clusters beyond k, merged back (default 2; 0 = thesis)
-//   --alternative-extra-clusters A,B  also tried, the lowest concave normalized cut kept (default 8;
-//                  '' none)
+//   --extra-clusters N  K-means clusters beyond k, merged back (default 3; 0 = thesis)
+//   --alternative-extra-clusters A,B  also tried, the lowest concave normalized cut kept (default none)
 //   --cut-angle-scale S  concavity scale (radians) of that normalized cut (default 0.1)
 //   --seed S       start face of the Nyström sampling
 //   --thesis       the thesis's k-way method (K_way_options::thesis(): no extra clusters, its graph cut,

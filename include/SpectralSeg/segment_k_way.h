@@ -46,20 +46,20 @@ Embedding::Spectral_embedding embed(const Weighted_dual_graph& graph, std::size_
 }
 
 // K-means, merge (when over-segmented), graph cut and connected segments on
-// `coordinates` (columns of `embedding`): k clusters, k_final segments.
+// r.embedding: k clusters, k_final segments.
 template <typename AffinityKernel>
-void cluster(const Weighted_dual_graph& graph, const Eigen::MatrixXd& coordinates,
-             const Embedding::Spectral_embedding& embedding, std::size_t k, std::size_t k_final,
+void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
              const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
              const Execution& exec)
 {
+  const Eigen::MatrixXd& coordinates = r.embedding.coordinates;
   if(coordinates.cols() == 0)
     throw Error("k-way segmentation: the affinity matrix has no positive eigenvalue after the first");
   exec.report("k-means", 0.);
   std::vector<std::size_t> seeds;
-  if(!embedding.exact && options.seed_with_samples)
-    for(std::size_t i = 0; i < k && i < embedding.samples.size(); ++i)
-      seeds.push_back(embedding.samples[i]);
+  if(!r.embedding.exact && options.seed_with_samples)
+    for(std::size_t i = 0; i < k && i < r.embedding.samples.size(); ++i)
+      seeds.push_back(r.embedding.samples[i]);
   r.clusters = Clustering::kmeans(coordinates, k, seeds, options.kmeans_iterations, exec);
 
   r.labels = r.clusters.labels;
@@ -182,6 +182,14 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     return r;
   }
 
+  // the whole k-way with k + e clusters into `out`, its stages timed by `lap`
+  const auto run = [&](std::size_t e, K_way_result& out, internal::Stage_timer& lap_out) {
+    const std::size_t clusters = std::min(k + e, n - 1);
+    out.embedding = internal::embed(graph, clusters, options.kernel, options.embedding, exec);
+    lap_out("embedding");
+    internal::cluster(graph, std::max(k, clusters), k, options, out, lap_out, exec);
+    out.extra_clusters = std::max(k, clusters) - k;
+  };
   // the numbers of extra clusters to try, each once, in the given order
   std::vector<std::size_t> extras{options.extra_clusters};
   for(std::size_t e : options.alternative_extra_clusters)
@@ -189,41 +197,24 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       extras.push_back(e);
   if(extras.size() == 1)
   {
-    const std::size_t clusters = std::min(k + options.extra_clusters, n - 1);
-    r.embedding = internal::embed(graph, clusters, options.kernel, options.embedding, exec);
-    lap("embedding");
-    internal::cluster(graph, r.embedding.coordinates, r.embedding, std::max(k, clusters), k, options, r, lap, exec);
-    r.extra_clusters = std::max(k, clusters) - k;
+    run(options.extra_clusters, r, lap);
     return r;
   }
-  // Each over-segmentation in full (embedding, K-means, merge, graph cut);
-  // the lowest concave normalized cut is kept, ties to the first tried.
-  double lowest = std::numeric_limits<double>::infinity();
+  // Each over-segmentation in full; the lowest concave normalized cut is
+  // kept, ties to the first tried. The stage times are summed.
   std::vector<std::pair<std::string, double>> timings;
+  internal::Stage_timer sum(timings, true);
+  double lowest = std::numeric_limits<double>::infinity();
   for(std::size_t e : extras)
   {
     K_way_result candidate;
-    internal::Stage_timer candidate_lap(candidate.timings);
-    const std::size_t clusters = std::min(k + e, n - 1);
-    candidate.embedding = internal::embed(graph, clusters, options.kernel, options.embedding, exec);
-    candidate_lap("embedding");
-    internal::cluster(graph, candidate.embedding.coordinates, candidate.embedding, std::max(k, clusters), k, options,
-                      candidate, candidate_lap, exec);
+    run(e, candidate, sum);
     candidate.normalized_cut =
       Refinement::concave_normalized_cut(graph.graph(), candidate.labels, options.cut_angle_scale);
-    candidate_lap("choice");
-    for(const auto& t : candidate.timings) // summed per stage, in first-seen order
-    {
-      auto it = std::find_if(timings.begin(), timings.end(), [&](const auto& x) { return x.first == t.first; });
-      if(it == timings.end())
-        timings.push_back(t);
-      else
-        it->second += t.second;
-    }
+    sum("choice");
     if(candidate.normalized_cut < lowest) // strict: ties to the first tried
     {
       lowest = candidate.normalized_cut;
-      candidate.extra_clusters = std::max(k, clusters) - k;
       r = std::move(candidate);
     }
   }

@@ -33,7 +33,7 @@ namespace Refinement {
 /// length, and each segment's cost is relative to its size, so neither
 /// slivers nor long seams are cheap. `segment_k_way()` uses it to choose
 /// between over-segmentations with different numbers of extra clusters
-/// (`K_way_options::max_extra_clusters`); segmentations with the same number
+/// (`K_way_options::alternative_extra_clusters`); segmentations with the same number
 /// of segments compare directly.
 ///
 /// \param graph the dual graph
