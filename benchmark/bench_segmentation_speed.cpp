@@ -305,6 +305,7 @@ int main(int argc, char** argv)
   // the allocator setting of the spectralseg tool (tools/spectralseg/main.cpp),
   // for every method, CGAL's included
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
 #endif
   if(args.size() == 1 && args[0] == "--methods")
   {

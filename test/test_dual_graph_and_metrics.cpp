@@ -332,6 +332,39 @@ TEST_CASE("farthest point sampling spreads samples along a strip", "[sampling]")
   CHECK(sorted.size() == n);
 }
 
+TEST_CASE("adding a source lowers the nearest-source distances as a run from all the sources would", "[sampling]")
+{
+  const std::size_t n = 40;
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::equilateral_strip(n));
+  const Dual_graph g = make_dual_graph(m);
+  std::vector<double> w = Metrics::Geodesic_weight()(g);
+  for(std::size_t e = 0; e < w.size(); ++e)
+    w[e] *= 1. + 0.5 * double((e * 7) % 5); // uneven, so that paths are not all alike
+  const Weighted_dual_graph wg(g, w);
+  const std::vector<Dual_graph::size_type> sources{3, 31, 17, 17, 0};
+  std::vector<double> distance(n, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> nearest(n, Nearest_source_distances::unreachable);
+  for(std::size_t i = 0; i < sources.size(); ++i)
+  {
+    wg.add_source(sources[i], i, distance, nearest);
+    const std::vector<Dual_graph::size_type> so_far(sources.begin(), sources.begin() + std::ptrdiff_t(i) + 1);
+    const Nearest_source_distances all = wg.distances(so_far);
+    CHECK(distance == all.distance); // bit for bit
+    for(std::size_t f = 0; f < n; ++f)
+    {
+      INFO("face " << f << " after " << i + 1 << " sources");
+      // the nearest source is one at that distance, the earliest on ties
+      CHECK(wg.distances(sources[nearest[f]])[f] == distance[f]);
+      for(std::size_t j = 0; j < nearest[f]; ++j)
+        CHECK(wg.distances(sources[j])[f] > distance[f]);
+    }
+  }
+  CHECK(nearest[17] == 2); // the repeated source keeps its first position
+  CHECK_THROWS_AS(wg.add_source(Dual_graph::size_type(n), 0, distance, nearest), Invalid_input);
+  std::vector<double> short_distance(n - 1, 0.);
+  CHECK_THROWS_AS(wg.add_source(0, 0, short_distance, nearest), Invalid_input);
+}
+
 TEST_CASE("quantile normalisation divides by the quantile and clamps at 1", "[metrics][normalization]")
 {
   std::vector<double> w = {0., 1., 2., 3., 100.};

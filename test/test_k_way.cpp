@@ -61,7 +61,10 @@ TEST_CASE("k-way finds the body and the four limbs of a star", "[k_way]")
     const K_way_result r = segment_k_way(s.weighted, 5, with_method(m));
     CHECK(r.number_of_segments == 5);
     CHECK(r.embedding.exact == (m == Embedding::Method::exact));
-    CHECK(r.clusters.centroids.rows() == Eigen::Index(5 + K_way_options().extra_clusters));
+    // the default tries two over-segmentations and keeps one
+    CHECK((r.extra_clusters == K_way_options().extra_clusters ||
+           r.extra_clusters == K_way_options().alternative_extra_clusters.at(0)));
+    CHECK(r.clusters.centroids.rows() == Eigen::Index(5 + r.extra_clusters));
     CHECK(Evaluation::rand_index_error(r.labels, s.soup.face_part) < 0.05);
     // the thesis's method: K-means with exactly k clusters, no merging
     K_way_options thesis = K_way_options::thesis();
@@ -666,14 +669,19 @@ TEST_CASE("k-way with alternative extra clusters keeps the result with the lower
           "[k_way][choice]")
 {
   const Star& s = star();
-  CHECK(K_way_options().alternative_extra_clusters.empty());
+  CHECK(K_way_options().alternative_extra_clusters == std::vector<std::size_t>{8});
   CHECK(K_way_options::thesis().alternative_extra_clusters.empty());
+  for(Embedding::Method m : {Embedding::Method::exact, Embedding::Method::nystrom})
   for(std::size_t k : {3, 5})
   {
-    INFO("k " << k);
-    K_way_options few, many, both;
+    INFO("k " << k << ", method " << int(m));
+    // with Nyström the candidates share the samples of the largest: the
+    // same labels as separate runs, since farthest-point samples are nested
+    K_way_options few = with_method(m), many = with_method(m), both = with_method(m);
     few.extra_clusters = 0;
+    few.alternative_extra_clusters.clear();
     many.extra_clusters = 6;
+    many.alternative_extra_clusters.clear();
     both.extra_clusters = 0;
     both.alternative_extra_clusters = {6, 0, 6}; // repeats are tried once
     const K_way_result a = segment_k_way(s.weighted, k, few), b = segment_k_way(s.weighted, k, many);
@@ -689,6 +697,20 @@ TEST_CASE("k-way with alternative extra clusters keeps the result with the lower
     CHECK(c.normalized_cut == Approx(std::min(na, nb)));
     CHECK(c.number_of_segments == k);
     CHECK(c.clusters.centroids.rows() == Eigen::Index(k + c.extra_clusters));
+    CHECK(c.embedding.samples == lower.embedding.samples);
+    // the candidates run side by side on several threads, one after the
+    // other on one: the same result
+    const K_way_result one = segment_k_way(s.weighted, k, both, Execution(1));
+    const K_way_result three = segment_k_way(s.weighted, k, both, Execution(3));
+    CHECK(one.labels == c.labels);
+    CHECK(three.labels == c.labels);
+    // cancelled while the candidates run: the exception, no hang or crash
+    std::size_t calls = 0;
+    const Execution cancel(2, [&calls](const std::string& stage, double) {
+      return !(stage == "graph cut" && ++calls > 1);
+    });
+    if(both.boundary_enhancement)
+      CHECK_THROWS_AS(segment_k_way(s.weighted, k, both, cancel), Operation_cancelled);
     // every stage timed once, the candidates' times summed
     std::set<std::string> stages;
     for(const auto& t : c.timings)

@@ -55,15 +55,17 @@ struct Basic_K_way_options
   /// fingers) unsplit; the extra clusters take those small parts and the
   /// merge joins the body pieces across their smooth seams. 0 gives the
   /// thesis's method (`thesis()`). See also `alternative_extra_clusters`.
-  std::size_t extra_clusters = 3;
+  std::size_t extra_clusters = 2;
   /// choice of the over-segmentation (our addition): each of these numbers
-  /// of extra clusters is tried as well as `extra_clusters` (embedding,
-  /// K-means, merge and graph cut each time), and the result with the lowest
+  /// of extra clusters is tried as well as `extra_clusters` (K-means, merge
+  /// and graph cut each time; the Nyström samples and their distance rows
+  /// are computed once for all), and the result with the lowest
   /// `Refinement::concave_normalized_cut()` is kept. How many clusters it
   /// takes to give each small part its own depends on the shape; the
   /// normalized cut prefers the result whose boundaries follow concave
-  /// creases. Empty: `extra_clusters` only, at the cost of one segmentation.
-  std::vector<std::size_t> alternative_extra_clusters;
+  /// creases. Default {8}: two over-segmentations, 2 and 8 extra clusters.
+  /// Empty: `extra_clusters` only, at the cost of one segmentation.
+  std::vector<std::size_t> alternative_extra_clusters{8};
   /// the concavity scale \f$s\f$ (radians) of the normalized cut that
   /// chooses the over-segmentation
   double cut_angle_scale = 0.1;

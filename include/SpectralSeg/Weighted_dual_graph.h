@@ -15,8 +15,11 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <limits>
+#include <queue>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace SpectralSeg {
@@ -99,6 +102,53 @@ public:
       rows.row(static_cast<Eigen::Index>(i)) = Eigen::Map<const Eigen::RowVectorXd>(d.data(), static_cast<Eigen::Index>(d.size()));
     });
     return rows;
+  }
+
+  /// Adds a source to nearest-source distances: wherever `source` is
+  /// closer than `distance[f]`, lowers `distance[f]` to its distance from
+  /// `source` and sets `nearest[f] = label`. Only the faces that get closer
+  /// are visited (a Dijkstra run bounded by `distance`), so adding a source
+  /// among i well-spread ones visits about 1/i of the faces; the distances
+  /// are those of `distances()` from all the sources. A face at distance 0
+  /// from an earlier source keeps it.
+  /// \throws Invalid_input if `source` is out of range or `distance` or
+  /// `nearest` does not have one entry per face
+  void add_source(size_type source, std::size_t label, std::vector<double>& distance,
+                  std::vector<std::size_t>& nearest) const
+  {
+    const Dual_graph::Csr& g = graph_.csr();
+    const std::size_t n = graph_.number_of_faces();
+    if(source >= n)
+      throw Invalid_input("add_source: source face " + std::to_string(source) + " is out of range (the mesh has " +
+                          std::to_string(n) + " faces)");
+    if(distance.size() != n || nearest.size() != n)
+      throw Invalid_input("add_source: " + std::to_string(distance.size()) + " distances and " +
+                          std::to_string(nearest.size()) + " nearest sources for " + std::to_string(n) + " faces");
+    if(!(distance[source] > 0.))
+      return;
+    typedef std::pair<double, size_type> Entry;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    distance[source] = 0.;
+    nearest[source] = label;
+    queue.emplace(0., source);
+    while(!queue.empty())
+    {
+      const Entry top = queue.top();
+      queue.pop();
+      if(top.first > distance[top.second]) // lowered since it was queued
+        continue;
+      for(auto e : boost::make_iterator_range(boost::out_edges(top.second, g)))
+      {
+        const size_type v = boost::target(e, g);
+        const double d = top.first + arc_weights_[get(boost::edge_index, g, e)];
+        if(d < distance[v])
+        {
+          distance[v] = d;
+          nearest[v] = label;
+          queue.emplace(d, v);
+        }
+      }
+    }
   }
 
 private:

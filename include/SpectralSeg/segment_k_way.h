@@ -20,6 +20,9 @@
 #include <SpectralSeg/internal/Stage_timer.h>
 
 #include <algorithm>
+#include <atomic>
+#include <functional>
+#include <future>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -45,26 +48,32 @@ Embedding::Spectral_embedding embed(const Weighted_dual_graph& graph, std::size_
                : Embedding::nystrom_spectral_embedding(graph, dims, kernel, options, exec);
 }
 
-// K-means, merge (when over-segmented), graph cut and connected segments on
-// r.embedding: k clusters, k_final segments.
+// K-means on r.embedding into k clusters.
 template <typename AffinityKernel>
-void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
-             const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
-             const Execution& exec)
+void kmeans_clusters(std::size_t k, const Basic_K_way_options<AffinityKernel>& options, K_way_result& r,
+                     Stage_timer& lap, const Execution& exec)
 {
-  const Eigen::MatrixXd& coordinates = r.embedding.coordinates;
-  if(coordinates.cols() == 0)
+  if(r.embedding.coordinates.cols() == 0)
     throw Error("k-way segmentation: the affinity matrix has no positive eigenvalue after the first");
   exec.report("k-means", 0.);
   std::vector<std::size_t> seeds;
   if(!r.embedding.exact && options.seed_with_samples)
     for(std::size_t i = 0; i < k && i < r.embedding.samples.size(); ++i)
       seeds.push_back(r.embedding.samples[i]);
-  r.clusters = Clustering::kmeans(coordinates, k, seeds, options.kmeans_iterations, exec);
-
+  r.clusters = Clustering::kmeans(r.embedding.coordinates, k, seeds, options.kmeans_iterations, exec);
   r.labels = r.clusters.labels;
   exec.report("k-means", 1.);
   lap("k-means");
+}
+
+// Merge (when over-segmented), graph cut and connected segments on the k
+// K-means clusters of kmeans_clusters(): k_final segments.
+template <typename AffinityKernel>
+void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
+                     const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
+                     const Execution& exec)
+{
+  const Eigen::MatrixXd& coordinates = r.embedding.coordinates;
   // Over-segmented: merge first, then cut the k merged segments with their
   // mean embedding as proxies. With several connected components the
   // segments can outnumber the clusters (each component is at least one),
@@ -128,7 +137,7 @@ void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_fina
 /// \ingroup PkgSpectralSegKWay
 /// \brief Segments the faces of a weighted dual graph into `k` parts.
 ///
-/// With \f$m = k +\f$ `options.extra_clusters` (3 by default, 0 for the
+/// With \f$m = k +\f$ `options.extra_clusters` (2 by default, 0 for the
 /// thesis's method):
 /// 1. spectral embedding in \f$m\f$ dimensions: exact for small meshes,
 ///    Nyström with \f$m + 1\f$ farthest-point samples for large ones
@@ -145,12 +154,16 @@ void cluster(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_fina
 ///    `options.graph_cut`, by default in a band along the boundaries);
 /// 5. every segment made one connected region (`Refinement::make_segments_connected()`).
 ///
-/// With `options.alternative_extra_clusters` (empty by default), steps 1-5
-/// are also run with each of those numbers of extra clusters, and the result
-/// with the lowest `Refinement::concave_normalized_cut()` is kept (ties to
+/// With `options.alternative_extra_clusters` ({8} by default, empty for
+/// the thesis's method), steps 1-5 are also run with each of those numbers
+/// of extra clusters, and the result with the lowest
+/// `Refinement::concave_normalized_cut()` is kept (ties to
 /// `extra_clusters`): its boundaries follow concave creases best.
-/// `K_way_result::extra_clusters` says which was kept. The time grows with
-/// the number of segmentations made.
+/// `K_way_result::extra_clusters` says which was kept. The Nyström
+/// farthest-point samples are nested, so the samples and distance rows of
+/// the largest count serve every candidate; with several threads the
+/// candidates' merges and graph cuts run side by side. The result does not
+/// depend on the number of threads.
 ///
 /// On a mesh with more connected components than \f$m\f$ the merge cannot
 /// bring the segments down to \f$m\f$ labels; there the graph cut runs on
@@ -182,14 +195,11 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     return r;
   }
 
-  // the whole k-way with k + e clusters into `out`, its stages timed by `lap`
-  const auto run = [&](std::size_t e, K_way_result& out, internal::Stage_timer& lap_out) {
-    const std::size_t clusters = std::min(k + e, n - 1);
-    out.embedding = internal::embed(graph, clusters, options.kernel, options.embedding, exec);
-    lap_out("embedding");
-    internal::cluster(graph, std::max(k, clusters), k, options, out, lap_out, exec);
-    out.extra_clusters = std::max(k, clusters) - k;
-  };
+  // the number of K-means clusters with `e` extra clusters
+  // the embedding's dimensions and the number of K-means clusters with `e`
+  // extra clusters (k clusters in fewer dimensions on a mesh of k faces)
+  const auto dimensions_of = [&](std::size_t e) { return std::min(k + e, n - 1); };
+  const auto clusters_of = [&](std::size_t e) { return std::max(k, dimensions_of(e)); };
   // the numbers of extra clusters to try, each once, in the given order
   std::vector<std::size_t> extras{options.extra_clusters};
   for(std::size_t e : options.alternative_extra_clusters)
@@ -197,27 +207,108 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       extras.push_back(e);
   if(extras.size() == 1)
   {
-    run(options.extra_clusters, r, lap);
+    r.embedding = internal::embed(graph, dimensions_of(options.extra_clusters), options.kernel, options.embedding, exec);
+    lap("embedding");
+    internal::kmeans_clusters(clusters_of(options.extra_clusters), options, r, lap, exec);
+    internal::refine_clusters(graph, clusters_of(options.extra_clusters), k, options, r, lap, exec);
+    r.extra_clusters = clusters_of(options.extra_clusters) - k;
     return r;
   }
-  // Each over-segmentation in full; the lowest concave normalized cut is
-  // kept, ties to the first tried. The stage times are summed.
-  std::vector<std::pair<std::string, double>> timings;
-  internal::Stage_timer sum(timings, true);
-  double lowest = std::numeric_limits<double>::infinity();
-  for(std::size_t e : extras)
+
+  // Several over-segmentations, each in full; the lowest concave normalized
+  // cut is kept, ties to the first tried.
+  std::vector<K_way_result> candidates(extras.size());
+  std::vector<std::vector<std::pair<std::string, double>>> times(extras.size());
+  const Embedding::Embedding_options& eo = options.embedding;
+  // Nyström with farthest-point samples: the samples are nested, so the
+  // samples and distance rows of the most clusters serve every candidate.
+  const bool share = eo.sampling == Embedding::Sampling_method::farthest_point && eo.samples == 0 &&
+                     (eo.method == Embedding::Method::nystrom ||
+                      (eo.method == Embedding::Method::automatic && n > eo.exact_face_limit));
+  Embedding::internal::Nystrom_rows shared;
+  if(share)
   {
-    K_way_result candidate;
-    run(e, candidate, sum);
-    candidate.normalized_cut =
-      Refinement::concave_normalized_cut(graph.graph(), candidate.labels, options.cut_angle_scale);
-    sum("choice");
-    if(candidate.normalized_cut < lowest) // strict: ties to the first tried
+    std::size_t largest = 0;
+    for(std::size_t e : extras)
+      largest = std::max(largest, dimensions_of(e));
+    shared = Embedding::internal::nystrom_rows(graph, largest + 1, options.kernel, eo, exec);
+    lap("embedding");
+  }
+  // The stages that use every thread (embedding, K-means) for one
+  // candidate after the other, then the mostly sequential ones (merge,
+  // max-flow) side by side, the threads shared between the candidates: the
+  // first of each group on this thread, reporting progress to `exec`, the
+  // others on threads of their own, which stop when this one throws. A
+  // candidate's result does not depend on where, or on how many threads,
+  // it ran.
+  for(std::size_t i = 0; i < extras.size(); ++i)
+  {
+    internal::Stage_timer t(times[i], true);
+    K_way_result& c = candidates[i];
+    const std::size_t dimensions = dimensions_of(extras[i]);
+    if(share)
     {
-      lowest = candidate.normalized_cut;
-      r = std::move(candidate);
+      const std::size_t l = dimensions + 1;
+      double width = 0.;
+      const Embedding::internal::Row_matrix w =
+        Embedding::internal::affinity_rows(shared.distances, l, options.kernel, width, exec);
+      c.embedding = Embedding::internal::nystrom_embedding_from_affinities(
+        w, std::vector<Dual_graph::size_type>(shared.samples.begin(), shared.samples.begin() + std::ptrdiff_t(l)),
+        width, dimensions, exec);
+    }
+    else
+      c.embedding = internal::embed(graph, dimensions, options.kernel, eo, exec);
+    t("embedding");
+    internal::kmeans_clusters(clusters_of(extras[i]), options, c, t, exec);
+  }
+  shared = Embedding::internal::Nystrom_rows(); // no longer needed
+  const auto refine = [&](std::size_t i, const Execution& x) {
+    internal::Stage_timer t(times[i], true);
+    K_way_result& c = candidates[i];
+    internal::refine_clusters(graph, clusters_of(extras[i]), k, options, c, t, x);
+    c.extra_clusters = clusters_of(extras[i]) - k;
+    c.normalized_cut = Refinement::concave_normalized_cut(graph.graph(), c.labels, options.cut_angle_scale);
+    t("choice");
+  };
+  for(std::size_t first = 0; first < extras.size(); first += exec.threads())
+  {
+    const std::size_t last = std::min<std::size_t>(first + exec.threads(), extras.size());
+    const unsigned threads = std::max(1u, exec.threads() / unsigned(last - first));
+    std::atomic<bool> stop(false);
+    const Execution here = !exec.has_progress() ? Execution(threads)
+                           : Execution(threads, [&exec](const std::string& stage, double fraction) {
+                               exec.report(stage, fraction); // throws when cancelled
+                               return true;
+                             });
+    const Execution other(threads, [&stop](const std::string&, double) { return !stop.load(); });
+    std::vector<std::future<void>> others;
+    try
+    {
+      for(std::size_t i = first + 1; i < last; ++i)
+        others.push_back(std::async(std::launch::async, refine, i, std::cref(other)));
+      refine(first, here);
+      for(auto& f : others)
+        f.get(); // rethrows a candidate's exception
+    }
+    catch(...)
+    {
+      stop = true;
+      for(auto& f : others)
+        if(f.valid())
+          f.wait();
+      throw;
     }
   }
+  std::size_t kept = 0;
+  for(std::size_t i = 1; i < candidates.size(); ++i)
+    if(candidates[i].normalized_cut < candidates[kept].normalized_cut) // strict: ties to the first tried
+      kept = i;
+  std::vector<std::pair<std::string, double>> timings = std::move(r.timings); // the shared sampling
+  internal::Stage_timer sum(timings, true);
+  for(const auto& candidate_times : times)
+    for(const auto& t : candidate_times)
+      sum.add(t.first, t.second);
+  r = std::move(candidates[kept]);
   r.timings = std::move(timings);
   return r;
 }

@@ -57,12 +57,15 @@ int main(int argc, char** argv)
   std::signal(SIGXFSZ, SIG_IGN);
 #if defined(__GLIBC__)
   // glibc serves blocks above 128 KB to 32 MB with mmap and gives them back
-  // on free; the next stage then page-faults the same amount in again. A
+  // on free, and gives the free memory at the top of a heap back above 128
+  // KB; the next stage then page-faults the same amount in again. A
   // segmentation allocates and frees many such arrays (the mesh, the dual
-  // graph, the rays' hits, the embedding), so keep them in the heap: 10-20%
-  // less time on large meshes (doc/benchmarks.md), a few percent more peak
-  // memory. The library leaves malloc alone; programs may do the same.
+  // graph, the rays' hits, the embedding, the max-flow graphs of the graph
+  // cut), so keep them in the heap, the heaps of other threads included
+  // (doc/benchmarks.md): less time, a few percent more peak memory. The
+  // library leaves malloc alone; programs may do the same.
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
 #endif
   CLI::App app{"spectralseg: part-aware spectral segmentation of triangle meshes"};
   app.require_subcommand(1);

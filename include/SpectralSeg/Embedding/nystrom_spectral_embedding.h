@@ -109,6 +109,144 @@ std::vector<Dual_graph::size_type> gamma_samples(const Weighted_dual_graph& grap
 } // namespace internal
 /// \endcond
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The farthest-point sampling of the Nyström embedding: from a face drawn
+// with `seed`, keeping the distance rows.
+inline Sampling::Farthest_point_options farthest_point_sampling(std::size_t faces, unsigned int seed)
+{
+  std::mt19937 random(seed);
+  Sampling::Farthest_point_options o;
+  o.start = static_cast<Dual_graph::size_type>(std::uniform_int_distribution<std::size_t>(0, faces - 1)(random));
+  o.keep_distance_rows = true; // the embedding's rows, without running Dijkstra again
+  return o;
+}
+
+// The Nyström samples and their distance rows (samples x faces).
+struct Nystrom_rows
+{
+  std::vector<Dual_graph::size_type> samples;
+  Row_matrix distances;
+};
+
+// The `l` samples of nystrom_spectral_embedding() and their distance rows.
+// Farthest-point samples are nested: the first `m` of `l` are the samples
+// a call with `m` would choose, so one call serves several sample counts.
+template <typename AffinityKernel>
+Nystrom_rows nystrom_rows(const Weighted_dual_graph& graph, std::size_t l, const AffinityKernel& kernel,
+                          const Embedding_options& options, const Execution& exec)
+{
+  const std::size_t n = graph.graph().number_of_faces();
+  Nystrom_rows out;
+  if(options.sampling == Sampling_method::gamma)
+  {
+    out.samples = gamma_samples(graph, l, options.gamma_candidates, kernel, options.seed, exec);
+    out.distances = graph.distance_rows(out.samples, exec);
+    return out;
+  }
+  Sampling::Farthest_point_samples samples =
+    Sampling::farthest_point_samples(graph, l, farthest_point_sampling(n, options.seed), exec);
+  out.samples = std::move(samples.faces);
+  out.distances.resize(static_cast<Eigen::Index>(l), static_cast<Eigen::Index>(n));
+  for(std::size_t i = 0; i < l; ++i) // each row freed once copied
+  {
+    out.distances.row(static_cast<Eigen::Index>(i)) =
+      Eigen::Map<const Eigen::RowVectorXd>(samples.distance_rows[i].data(), static_cast<Eigen::Index>(n));
+    std::vector<double>().swap(samples.distance_rows[i]);
+  }
+  return out;
+}
+
+// The affinity rows of the first `l` of the distance rows `distances`, and
+// the kernel width they give (as distances_to_affinities()).
+template <typename AffinityKernel>
+Row_matrix affinity_rows(const Row_matrix& distances, std::size_t l, const AffinityKernel& kernel, double& width,
+                         const Execution& exec)
+{
+  const auto rows = static_cast<Eigen::Index>(l);
+  const double mean = mean_finite(distances, rows);
+  width = mean > 0 ? kernel.width(mean) : 1.;
+  Row_matrix w(rows, distances.cols());
+  ::SpectralSeg::internal::parallel_range(0, l, exec.threads(), [&](std::size_t i) {
+    for(Eigen::Index j = 0; j < w.cols(); ++j)
+    {
+      const double d = distances(Eigen::Index(i), j);
+      w(Eigen::Index(i), j) = std::isfinite(d) ? kernel(d, width) : 0.;
+    }
+  });
+  return w;
+}
+
+// The Nyström embedding from the affinity rows `w` of `samples`.
+inline Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
+                                                            std::vector<Dual_graph::size_type> samples,
+                                                            double kernel_width, std::size_t dimensions,
+                                                            const Execution& exec)
+{
+  const std::size_t n = static_cast<std::size_t>(w.cols());
+  const std::size_t l = samples.size();
+  Spectral_embedding out;
+  out.exact = false;
+  out.samples = std::move(samples);
+  out.kernel_width = kernel_width;
+
+  exec.report("eigen-solve", 0.);
+  const Eigen::Index ll = static_cast<Eigen::Index>(l);
+  Eigen::MatrixXd a(ll, ll);
+  for(Eigen::Index i = 0; i < ll; ++i)
+    for(Eigen::Index j = 0; j < ll; ++j)
+      a(i, j) = 0.5 * (w(i, out.samples[std::size_t(j)]) + w(j, out.samples[std::size_t(i)]));
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
+  if(eig.info() != Eigen::Success)
+    throw Error("Nyström embedding: the eigen-solver did not converge on the sample affinities");
+  const Eigen::VectorXd delta = eig.eigenvalues().reverse();
+  Eigen::MatrixXd e = eig.eigenvectors().rowwise().reverse();
+  fix_signs(e);
+  const double tol = 1e-12 * std::max(1., std::abs(delta(0)));
+  Eigen::MatrixXd e_scaled = e;
+  for(Eigen::Index c = 0; c < ll; ++c)
+    e_scaled.col(c) = delta(c) > tol ? Eigen::VectorXd(e.col(c) / delta(c)) : Eigen::VectorXd::Zero(ll);
+  // the columns kept: after the first, those with a positive eigenvalue
+  out.first_eigenvalue = delta(0);
+  std::vector<Eigen::Index> kept;
+  for(Eigen::Index c = 1; c < ll && kept.size() < dimensions; ++c)
+    if(delta(c) > tol)
+      kept.push_back(c);
+  out.dropped_dimensions = dimensions - kept.size();
+  out.eigenvalues.resize(static_cast<Eigen::Index>(kept.size()));
+  for(std::size_t i = 0; i < kept.size(); ++i)
+    out.eigenvalues(Eigen::Index(i)) = delta(kept[i]);
+  // Each face's row of E~ = W_s^T E Delta^-1 (E on the samples), its kept
+  // columns scaled by Delta^1/2 as the coordinates; and Gamma
+  // (nystrom_gamma()) on the way: with y = E^T W_s,f, the face's term
+  // y^T Delta^-1 y is the sum of E~(f, c)^2 delta(c).
+  const double gamma_tol = 1e-10 * std::max(1., delta.cwiseAbs().maxCoeff());
+  std::vector<char> sampled(n, 0);
+  for(auto f : out.samples)
+    sampled[f] = 1;
+  std::vector<double> traced(n, 0.);
+  out.coordinates.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(kept.size()));
+  ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t f) {
+    const Eigen::RowVectorXd extended = w.col(Eigen::Index(f)).transpose() * e_scaled;
+    for(std::size_t i = 0; i < kept.size(); ++i)
+      out.coordinates(Eigen::Index(f), Eigen::Index(i)) = extended(kept[i]) * std::sqrt(delta(kept[i]));
+    if(!sampled[f])
+      for(Eigen::Index c = 0; c < ll; ++c)
+        if(delta(c) > gamma_tol)
+          traced[f] += extended(c) * extended(c) * delta(c);
+  });
+  double sum = 0.;
+  for(double t : traced) // in face order: thread-independent
+    sum += t;
+  out.gamma = double(n - l) - sum;
+  exec.report("eigen-solve", 1.);
+  return out;
+}
+
+} // namespace internal
+/// \endcond
+
 /// \ingroup PkgSpectralSegEmbedding
 /// \brief Embeds every face from the distance rows of a few sampled faces.
 ///
@@ -135,63 +273,9 @@ Spectral_embedding nystrom_spectral_embedding(const Weighted_dual_graph& graph, 
   if(dimensions == 0 || l > n || l < 2)
     throw Invalid_input("Nyström embedding: " + std::to_string(l) + " samples for " + std::to_string(dimensions) +
                         " dimensions on a mesh of " + std::to_string(n) + " faces");
-  Spectral_embedding out;
-  out.exact = false;
-  std::vector<std::vector<double>> rows; // the samples' distance rows, when the sampling kept them
-  if(options.sampling == Sampling_method::gamma)
-    out.samples = internal::gamma_samples(graph, l, options.gamma_candidates, kernel, options.seed, exec);
-  else
-  {
-    std::mt19937 random(options.seed);
-    const auto start = static_cast<Dual_graph::size_type>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random));
-    Sampling::Farthest_point_options sampling;
-    sampling.start = start;
-    sampling.keep_distance_rows = true; // the rows below, without running Dijkstra again
-    Sampling::Farthest_point_samples samples = Sampling::farthest_point_samples(graph, l, sampling, exec);
-    out.samples = samples.faces;
-    rows.swap(samples.distance_rows);
-  }
-
-  internal::Row_matrix w;
-  if(rows.empty())
-    w = graph.distance_rows(out.samples, exec);
-  else
-  {
-    w.resize(static_cast<Eigen::Index>(l), static_cast<Eigen::Index>(n));
-    for(std::size_t i = 0; i < l; ++i)
-    {
-      w.row(static_cast<Eigen::Index>(i)) =
-        Eigen::Map<const Eigen::RowVectorXd>(rows[i].data(), static_cast<Eigen::Index>(n));
-      std::vector<double>().swap(rows[i]);
-    }
-  }
-  out.kernel_width = internal::distances_to_affinities(w, kernel, exec);
-  out.gamma = nystrom_gamma(w, out.samples);
-
-  exec.report("eigen-solve", 0.);
-  const Eigen::Index ll = static_cast<Eigen::Index>(l);
-  Eigen::MatrixXd a(ll, ll);
-  for(Eigen::Index i = 0; i < ll; ++i)
-    for(Eigen::Index j = 0; j < ll; ++j)
-      a(i, j) = 0.5 * (w(i, out.samples[std::size_t(j)]) + w(j, out.samples[std::size_t(i)]));
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
-  if(eig.info() != Eigen::Success)
-    throw Error("Nyström embedding: the eigen-solver did not converge on the sample affinities");
-  const Eigen::VectorXd delta = eig.eigenvalues().reverse();
-  Eigen::MatrixXd e = eig.eigenvectors().rowwise().reverse();
-  internal::fix_signs(e);
-  // E~ = W_s^T E Delta^-1 for all faces (equal to E on the samples)
-  Eigen::MatrixXd extended(static_cast<Eigen::Index>(n), ll);
-  const double tol = 1e-12 * std::max(1., std::abs(delta(0)));
-  Eigen::MatrixXd e_scaled = e;
-  for(Eigen::Index c = 0; c < ll; ++c)
-    e_scaled.col(c) = delta(c) > tol ? Eigen::VectorXd(e.col(c) / delta(c)) : Eigen::VectorXd::Zero(ll);
-  ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t f) {
-    extended.row(Eigen::Index(f)).noalias() = w.col(Eigen::Index(f)).transpose() * e_scaled;
-  });
-  exec.report("eigen-solve", 1.);
-  internal::scaled_columns(delta, extended, dimensions, out);
-  return out;
+  internal::Nystrom_rows rows = internal::nystrom_rows(graph, l, kernel, options, exec);
+  const double width = internal::distances_to_affinities(rows.distances, kernel, exec); // in place
+  return internal::nystrom_embedding_from_affinities(rows.distances, std::move(rows.samples), width, dimensions, exec);
 }
 
 } // namespace Embedding

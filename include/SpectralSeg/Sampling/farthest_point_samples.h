@@ -9,6 +9,7 @@
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -105,63 +106,51 @@ inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& 
   }
 
   Farthest_point_samples out;
-  std::vector<std::vector<double>> rows; // of out.faces, in order
   out.faces.push_back(a);
-  rows.push_back(std::move(row_a));
+  out.distance = row_a; // to the nearest sample
+  out.nearest_sample.assign(n, 0);
   if(count > 1 && b != a)
   {
     out.faces.push_back(b);
-    rows.push_back(have_row_b ? std::move(row_b) : graph.distances(b));
-  }
-  // distance to the nearest sample, the first one on ties
-  std::vector<double> nearest = rows[0];
-  for(std::size_t i = 1; i < rows.size(); ++i)
+    if(!have_row_b)
+      row_b = graph.distances(b);
     for(std::size_t f = 0; f < n; ++f)
-      nearest[f] = std::min(nearest[f], rows[i][f]);
+      if(row_b[f] < out.distance[f]) // the first sample on ties
+      {
+        out.distance[f] = row_b[f];
+        out.nearest_sample[f] = 1;
+      }
+  }
+  else
+    row_b.clear();
+  // Each further sample lowers the distances where it is closer: a Dijkstra
+  // run bounded by them, over the new sample's region only.
   while(out.faces.size() < count)
   {
     exec.report("farthest point sampling", double(out.faces.size()) / double(count));
-    const Dual_graph::size_type next = farthest(nearest);
-    if(nearest[next] == 0.) // every face is already a sample or at distance 0 of one
+    const Dual_graph::size_type next = farthest(out.distance);
+    if(out.distance[next] == 0.) // every face is already a sample or at distance 0 of one
     {
       for(std::size_t f = 0; f < n && out.faces.size() < count; ++f)
         if(std::find(out.faces.begin(), out.faces.end(), f) == out.faces.end())
-        {
           out.faces.push_back(static_cast<Dual_graph::size_type>(f));
-          rows.push_back(options.keep_distance_rows ? graph.distances(static_cast<Dual_graph::size_type>(f))
-                                                    : std::vector<double>(n, 0.));
-        }
       break;
     }
     out.faces.push_back(next);
-    // one more Dijkstra from the new sample, merged into the nearest distances
-    rows.push_back(graph.distances(next));
-    const std::vector<double>& dn = rows.back();
-    for(std::size_t f = 0; f < n; ++f)
-      nearest[f] = std::min(nearest[f], dn[f]);
-    if(!options.keep_distance_rows)
-      rows.back() = std::vector<double>();
+    graph.add_source(next, out.faces.size() - 1, out.distance, out.nearest_sample);
   }
   exec.report("farthest point sampling", 1.);
-  // Nearest sample of each face: from the kept rows, the first sample in
-  // order at the minimum distance; else one multi-source Dijkstra run.
-  out.distance = std::move(nearest);
-  out.nearest_sample.assign(n, 0);
   if(options.keep_distance_rows)
   {
-    for(std::size_t f = 0; f < n; ++f)
-      for(std::size_t i = 0; i < rows.size(); ++i)
-        if(rows[i][f] == out.distance[f])
-        {
-          out.nearest_sample[f] = i;
-          break;
-        }
-    out.distance_rows = std::move(rows);
-  }
-  else
-  {
-    const Nearest_source_distances d = graph.distances(out.faces);
-    out.nearest_sample = d.nearest_source;
+    // the samples' full rows, in parallel (the diameter ends' are known)
+    out.distance_rows.resize(out.faces.size());
+    out.distance_rows[0] = std::move(row_a);
+    if(!row_b.empty())
+      out.distance_rows[1] = std::move(row_b);
+    ::SpectralSeg::internal::parallel_for(out.faces.size(), exec, "distance rows", [&](std::size_t i) {
+      if(out.distance_rows[i].empty())
+        out.distance_rows[i] = graph.distances(out.faces[i]);
+    });
   }
   return out;
 }

@@ -26,6 +26,11 @@ public:
     const auto now = std::chrono::steady_clock::now();
     const double seconds = std::chrono::duration<double>(now - clock_).count();
     clock_ = now;
+    add(stage, seconds);
+  }
+  // records (stage, seconds) without reading the clock
+  void add(const std::string& stage, double seconds)
+  {
     if(accumulate_)
       for(auto& t : timings_)
         if(t.first == stage)

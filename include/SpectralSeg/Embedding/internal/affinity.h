@@ -16,12 +16,13 @@ namespace internal {
 
 typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
 
-// Mean of the finite entries (distances to other components are infinite).
-inline double mean_finite(const Row_matrix& g)
+// Mean of the finite entries of the first `rows` rows (all by default;
+// distances to other components are infinite).
+inline double mean_finite(const Row_matrix& g, Eigen::Index rows = -1)
 {
   double sum = 0.;
   std::size_t count = 0;
-  for(Eigen::Index i = 0; i < g.rows(); ++i)
+  for(Eigen::Index i = 0; i < (rows < 0 ? g.rows() : rows); ++i)
   {
     double row = 0.;
     for(Eigen::Index j = 0; j < g.cols(); ++j)
