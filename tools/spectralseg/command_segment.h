@@ -100,7 +100,7 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
   cmd->add_option("--seed", o.seed, "seed of the sampling's start face")->capture_default_str()->check(Count(0, UINT32_MAX));
   cmd->add_option("--extra-clusters", o.extra_clusters,
                   "K-means makes k + N clusters, then the segments with the weakest (least concave) boundaries "
-                  "are merged until k are left (0: the thesis's method)")->capture_default_str()->check(Count(0, max_clusters));
+                  "are merged until k are left (0, with --alternative-extra-clusters none: the thesis's method)")->capture_default_str()->check(Count(0, max_clusters));
   const CLI::Validator count = Count(0, max_clusters);
   cmd
     ->add_option_function<std::vector<std::string>>(
