@@ -30,8 +30,8 @@ struct Farthest_point_samples
   /// for each face, the position in `faces` of its nearest sample
   std::vector<std::size_t> nearest_sample;
   /// with `Farthest_point_options::keep_distance_rows`: row `i` holds the
-  /// distances from `faces[i]` to every face (the Dijkstra runs the sampling
-  /// made anyway); empty otherwise
+  /// distances from `faces[i]` to every face (one Dijkstra run per sample,
+  /// in parallel, after the sampling); empty otherwise
   std::vector<std::vector<double>> distance_rows;
 };
 
@@ -43,9 +43,9 @@ struct Farthest_point_options
   Dual_graph::size_type start = 0;
   /// bound on the hops of the diameter search
   std::size_t max_hops = 10;
-  /// keep the distance row of every sample (`Farthest_point_samples::distance_rows`):
-  /// `count` times the number of faces doubles, saving the Nyström embedding
-  /// one Dijkstra run per sample
+  /// also compute the distance row of every sample
+  /// (`Farthest_point_samples::distance_rows`, what the Nyström embedding
+  /// needs): `count` times the number of faces doubles
   bool keep_distance_rows = false;
 };
 
@@ -60,11 +60,15 @@ struct Farthest_point_options
 /// Faces in another connected component than every sample are infinitely
 /// far, so each component receives a sample before any component gets a
 /// second one. Ties go to the smallest face index: the result is deterministic.
+/// Each new sample updates the distances to the nearest sample with
+/// `Weighted_dual_graph::add_source()`, which only visits the faces it
+/// brings closer. The samples of a smaller `count` are the first ones of a
+/// larger `count`.
 ///
 /// \param graph the weighted dual graph
 /// \param count number of samples (at most the number of faces)
 /// \param options the start face, the bound on the diameter search, whether
-///        to keep the samples' distance rows
+///        to compute the samples' distance rows
 /// \param exec progress reporting
 /// \throws Invalid_input if `count` is 0 or exceeds the number of faces, or `start` is out of range
 inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& graph, std::size_t count,
