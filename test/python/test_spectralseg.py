@@ -106,7 +106,8 @@ class KWay(unittest.TestCase):
     def test_options_are_used(self):
         v, f = Mesh.get()
         default = spectralseg.k_way_segmentation(v, f, 5)
-        thesis = spectralseg.k_way_segmentation(v, f, 5, extra_clusters=0, normalization="max")
+        thesis = spectralseg.k_way_segmentation(v, f, 5, extra_clusters=0, alternative_extra_clusters=[],
+                                                normalization="max")
         geodesic = spectralseg.k_way_segmentation(v, f, 5, metric="geodesic", boundary_enhancement=False)
         self.assertFalse(np.array_equal(default, thesis))
         self.assertFalse(np.array_equal(default, geodesic))
@@ -184,9 +185,12 @@ class SameAsCommandLine(unittest.TestCase):
     def test_k_way_options(self):
         v, f = Mesh.get()
         labels = spectralseg.k_way_segmentation(v, f, 4, ray_caster="aabb", kernel="gaussian", sampling="gamma",
-                                                samples=12, seed=3, extra_clusters=0)
+                                                samples=12, seed=3, extra_clusters=0, alternative_extra_clusters=[])
         self.check(labels, ["--k", "4", "--ray-caster", "aabb", "--kernel", "gaussian", "--sampling", "gamma",
-                            "--samples", "12", "--seed", "3", "--extra-clusters", "0"])
+                            "--samples", "12", "--seed", "3", "--extra-clusters", "0",
+                            "--alternative-extra-clusters", "none"])
+        labels = spectralseg.k_way_segmentation(v, f, 4, extra_clusters=1, alternative_extra_clusters=[5, 3])
+        self.check(labels, ["--k", "4", "--extra-clusters", "1", "--alternative-extra-clusters", "5,3"])
 
     def test_automatic(self):
         v, f = Mesh.get()
