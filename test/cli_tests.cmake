@@ -233,6 +233,7 @@ expect_absent("refused outputs" early.seg early.mtl early.obj out.xyz blocked.ob
 
 # --- --json -: the report on standard output, and nothing else there
 run_cli_json(segments 2 segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --mesh ${WORK}/q_json.ply --json -)
+run_cli_json(extra_clusters 2 segment ${WORK}/quads.off --k 2 --alternative-extra-clusters none --labels ${WORK}/q.seg --json -)
 run_cli_json("scores;rand_index_error" 0.0 eval --mesh ${WORK}/quads.off ${WORK}/q.seg ${WORK}/q.seg --json -)
 run_cli(0 "labels: .*q.seg" segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --json -)
 
@@ -279,6 +280,8 @@ run_cli(1 "2 of its 3 faces repeat another face" distance ${WORK}/copies.off --f
 run_cli(2 "--max-k: '-1' is not a whole number" segment ${WORK}/quads.off --k auto --max-k -1 --labels ${WORK}/q.seg)
 run_cli(2 "--extra-clusters: '-1'" segment ${WORK}/quads.off --k 2 --extra-clusters -1 --labels ${WORK}/q.seg)
 run_cli(2 "--samples: '-1'" segment ${WORK}/quads.off --k 2 --samples -1 --labels ${WORK}/q.seg)
+run_cli(2 "'none' cannot be combined" segment ${WORK}/quads.off --k 2 --alternative-extra-clusters none,3 --labels ${WORK}/q.seg)
+run_cli(2 "--alternative-extra-clusters: 'x' is not a whole number" segment ${WORK}/quads.off --k 2 --alternative-extra-clusters x --labels ${WORK}/q.seg)
 run_cli(2 "--samples: '20000'" segment ${WORK}/quads.off --k 2 --samples 20000 --labels ${WORK}/q.seg)
 run_cli(2 "--min-boundary-contrast: 'nan'" segment ${WORK}/quads.off --k auto --min-boundary-contrast nan --labels ${WORK}/q.seg)
 run_cli(2 "--vsi-fraction: 'nan'" distance ${WORK}/quads.off --from 0 --vsi-fraction nan --field ${WORK}/q.txt)

@@ -250,6 +250,14 @@ TEST_CASE("Gamma ranks a farthest-point sample set above a clustered one", "[nys
   const Embedding::Spectral_embedding e = Embedding::nystrom_spectral_embedding(s.weighted, 5, Kernels::Exponential_kernel(), o);
   CHECK(e.samples.size() == l);
   CHECK(e.gamma < g_clustered);
+  // the embedding's Gamma, computed along the projection, is nystrom_gamma()
+  // of its samples
+  CHECK(e.gamma == Approx(gamma(e.samples)).epsilon(1e-9).margin(1e-9));
+  Embedding::Embedding_options fp;
+  fp.method = Embedding::Method::nystrom;
+  const Embedding::Spectral_embedding f =
+    Embedding::nystrom_spectral_embedding(s.weighted, 5, Kernels::Exponential_kernel(), fp);
+  CHECK(f.gamma == Approx(gamma(f.samples)).epsilon(1e-9).margin(1e-9));
 }
 
 TEST_CASE("k-way labels do not depend on the number of threads", "[k_way][threads]")

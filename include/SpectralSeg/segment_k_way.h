@@ -23,7 +23,6 @@
 #include <atomic>
 #include <functional>
 #include <future>
-#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -195,7 +194,6 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     return r;
   }
 
-  // the number of K-means clusters with `e` extra clusters
   // the embedding's dimensions and the number of K-means clusters with `e`
   // extra clusters (k clusters in fewer dimensions on a mesh of k faces)
   const auto dimensions_of = [&](std::size_t e) { return std::min(k + e, n - 1); };
@@ -248,13 +246,16 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     const std::size_t dimensions = dimensions_of(extras[i]);
     if(share)
     {
-      const std::size_t l = dimensions + 1;
-      double width = 0.;
-      const Embedding::internal::Row_matrix w =
-        Embedding::internal::affinity_rows(shared.distances, l, options.kernel, width, exec);
+      // the candidate's leading rows, turned into affinities: the last
+      // candidate takes the rows themselves when it needs them all
+      const auto l = static_cast<Eigen::Index>(dimensions + 1);
+      Embedding::internal::Row_matrix w = i + 1 == extras.size() && l == shared.distances.rows()
+                                            ? std::move(shared.distances)
+                                            : Embedding::internal::Row_matrix(shared.distances.topRows(l));
+      const double width = Embedding::internal::distances_to_affinities(w, options.kernel, exec);
       c.embedding = Embedding::internal::nystrom_embedding_from_affinities(
-        w, std::vector<Dual_graph::size_type>(shared.samples.begin(), shared.samples.begin() + std::ptrdiff_t(l)),
-        width, dimensions, exec);
+        w, std::vector<Dual_graph::size_type>(shared.samples.begin(), shared.samples.begin() + l), width, dimensions,
+        exec);
     }
     else
       c.embedding = internal::embed(graph, dimensions, options.kernel, eo, exec);

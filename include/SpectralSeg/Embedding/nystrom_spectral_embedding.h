@@ -158,26 +158,6 @@ Nystrom_rows nystrom_rows(const Weighted_dual_graph& graph, std::size_t l, const
   return out;
 }
 
-// The affinity rows of the first `l` of the distance rows `distances`, and
-// the kernel width they give (as distances_to_affinities()).
-template <typename AffinityKernel>
-Row_matrix affinity_rows(const Row_matrix& distances, std::size_t l, const AffinityKernel& kernel, double& width,
-                         const Execution& exec)
-{
-  const auto rows = static_cast<Eigen::Index>(l);
-  const double mean = mean_finite(distances, rows);
-  width = mean > 0 ? kernel.width(mean) : 1.;
-  Row_matrix w(rows, distances.cols());
-  ::SpectralSeg::internal::parallel_range(0, l, exec.threads(), [&](std::size_t i) {
-    for(Eigen::Index j = 0; j < w.cols(); ++j)
-    {
-      const double d = distances(Eigen::Index(i), j);
-      w(Eigen::Index(i), j) = std::isfinite(d) ? kernel(d, width) : 0.;
-    }
-  });
-  return w;
-}
-
 // The Nyström embedding from the affinity rows `w` of `samples`.
 inline Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
                                                             std::vector<Dual_graph::size_type> samples,
@@ -227,14 +207,19 @@ inline Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
     sampled[f] = 1;
   std::vector<double> traced(n, 0.);
   out.coordinates.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(kept.size()));
-  ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t f) {
-    const Eigen::RowVectorXd extended = w.col(Eigen::Index(f)).transpose() * e_scaled;
-    for(std::size_t i = 0; i < kept.size(); ++i)
-      out.coordinates(Eigen::Index(f), Eigen::Index(i)) = extended(kept[i]) * std::sqrt(delta(kept[i]));
-    if(!sampled[f])
-      for(Eigen::Index c = 0; c < ll; ++c)
-        if(delta(c) > gamma_tol)
-          traced[f] += extended(c) * extended(c) * delta(c);
+  const std::size_t block = 1024; // faces per task, sharing one row buffer
+  ::SpectralSeg::internal::parallel_range(0, (n + block - 1) / block, exec.threads(), [&](std::size_t b) {
+    Eigen::RowVectorXd extended(ll);
+    for(std::size_t f = b * block; f < std::min(n, (b + 1) * block); ++f)
+    {
+      extended.noalias() = w.col(Eigen::Index(f)).transpose() * e_scaled;
+      for(std::size_t i = 0; i < kept.size(); ++i)
+        out.coordinates(Eigen::Index(f), Eigen::Index(i)) = extended(kept[i]) * std::sqrt(delta(kept[i]));
+      if(!sampled[f])
+        for(Eigen::Index c = 0; c < ll; ++c)
+          if(delta(c) > gamma_tol)
+            traced[f] += extended(c) * extended(c) * delta(c);
+    }
   });
   double sum = 0.;
   for(double t : traced) // in face order: thread-independent

@@ -16,13 +16,12 @@ namespace internal {
 
 typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
 
-// Mean of the finite entries of the first `rows` rows (all by default;
-// distances to other components are infinite).
-inline double mean_finite(const Row_matrix& g, Eigen::Index rows = -1)
+// Mean of the finite entries (distances to other components are infinite).
+inline double mean_finite(const Row_matrix& g)
 {
   double sum = 0.;
   std::size_t count = 0;
-  for(Eigen::Index i = 0; i < (rows < 0 ? g.rows() : rows); ++i)
+  for(Eigen::Index i = 0; i < g.rows(); ++i)
   {
     double row = 0.;
     for(Eigen::Index j = 0; j < g.cols(); ++j)
