@@ -47,7 +47,9 @@
 //   cut          graph-cut boundary enhancement; empty for CGAL (included
 //                in clustering)
 //   total        wall clock of everything above (the stage columns add up to
-//                it, up to a few milliseconds)
+//                it, up to a few milliseconds, except with several k-way
+//                candidates: their stage times are summed, and their merges
+//                and graph cuts run side by side)
 // and the peak resident memory in MB during the segmentation (VmHWM, reset
 // after the mesh is prepared, so that it counts the mesh but not its
 // subdivision or decimation; ru_maxrss of the whole process if the reset is
