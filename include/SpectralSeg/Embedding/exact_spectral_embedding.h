@@ -51,23 +51,34 @@ inline void leading_eigenpairs(const Row_matrix& w, Eigen::Index count, Eigen::V
   vectors = solver.eigenvectors();
 }
 
-// U = V(:, 1..) * sqrt(lambda(1..)), positive eigenvalues only, at most `dimensions` columns.
+// The eigenpairs an embedding keeps of `values` (in decreasing order):
+// after the first, those with a positive eigenvalue, at most `dimensions`.
+// Sets out.first_eigenvalue, out.dropped_dimensions and out.eigenvalues;
+// returns the kept columns.
+inline std::vector<Eigen::Index> kept_columns(const Eigen::VectorXd& values, std::size_t dimensions,
+                                              Spectral_embedding& out)
+{
+  out.first_eigenvalue = values.size() > 0 ? values(0) : 0.;
+  const double tol = 1e-12 * std::max(1., std::abs(out.first_eigenvalue));
+  std::vector<Eigen::Index> kept;
+  for(Eigen::Index c = 1; c < values.size() && kept.size() < dimensions; ++c)
+    if(values(c) > tol)
+      kept.push_back(c);
+  out.dropped_dimensions = dimensions - kept.size();
+  out.eigenvalues.resize(static_cast<Eigen::Index>(kept.size()));
+  for(std::size_t i = 0; i < kept.size(); ++i)
+    out.eigenvalues(Eigen::Index(i)) = values(kept[i]);
+  return kept;
+}
+
+// U = V(:, kept) * sqrt(lambda(kept)), the columns of kept_columns().
 inline void scaled_columns(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, std::size_t dimensions,
                            Spectral_embedding& out)
 {
-  out.first_eigenvalue = values.size() > 0 ? values(0) : 0.;
-  std::vector<Eigen::Index> kept;
-  for(Eigen::Index c = 1; c < values.size() && kept.size() < dimensions; ++c)
-    if(values(c) > 1e-12 * std::max(1., std::abs(values(0))))
-      kept.push_back(c);
-  out.dropped_dimensions = dimensions - std::min(dimensions, kept.size());
+  const std::vector<Eigen::Index> kept = kept_columns(values, dimensions, out);
   out.coordinates.resize(vectors.rows(), static_cast<Eigen::Index>(kept.size()));
-  out.eigenvalues.resize(static_cast<Eigen::Index>(kept.size()));
   for(std::size_t i = 0; i < kept.size(); ++i)
-  {
-    out.eigenvalues(Eigen::Index(i)) = values(kept[i]);
     out.coordinates.col(Eigen::Index(i)) = vectors.col(kept[i]) * std::sqrt(values(kept[i]));
-  }
 }
 
 } // namespace internal

@@ -187,16 +187,10 @@ inline Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
   Eigen::MatrixXd e_scaled = e;
   for(Eigen::Index c = 0; c < ll; ++c)
     e_scaled.col(c) = delta(c) > tol ? Eigen::VectorXd(e.col(c) / delta(c)) : Eigen::VectorXd::Zero(ll);
-  // the columns kept: after the first, those with a positive eigenvalue
-  out.first_eigenvalue = delta(0);
-  std::vector<Eigen::Index> kept;
-  for(Eigen::Index c = 1; c < ll && kept.size() < dimensions; ++c)
-    if(delta(c) > tol)
-      kept.push_back(c);
-  out.dropped_dimensions = dimensions - kept.size();
-  out.eigenvalues.resize(static_cast<Eigen::Index>(kept.size()));
+  const std::vector<Eigen::Index> kept = kept_columns(delta, dimensions, out);
+  Eigen::VectorXd scale(static_cast<Eigen::Index>(kept.size())); // Delta^1/2 of the kept columns
   for(std::size_t i = 0; i < kept.size(); ++i)
-    out.eigenvalues(Eigen::Index(i)) = delta(kept[i]);
+    scale(Eigen::Index(i)) = std::sqrt(delta(kept[i]));
   // Each face's row of E~ = W_s^T E Delta^-1 (E on the samples), its kept
   // columns scaled by Delta^1/2 as the coordinates; and Gamma
   // (nystrom_gamma()) on the way: with y = E^T W_s,f, the face's term
@@ -214,7 +208,7 @@ inline Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
     {
       extended.noalias() = w.col(Eigen::Index(f)).transpose() * e_scaled;
       for(std::size_t i = 0; i < kept.size(); ++i)
-        out.coordinates(Eigen::Index(f), Eigen::Index(i)) = extended(kept[i]) * std::sqrt(delta(kept[i]));
+        out.coordinates(Eigen::Index(f), Eigen::Index(i)) = extended(kept[i]) * scale(Eigen::Index(i));
       if(!sampled[f])
         for(Eigen::Index c = 0; c < ll; ++c)
           if(delta(c) > gamma_tol)
