@@ -35,6 +35,7 @@
 //   --band B       graph-cut band width (default 0.4; 0: every face may move, the thesis)
 //   --crease-angle A  split clusters along closed concave creases of A degrees (default 30; 0: off)
 //   --merge-size-exponent E  the merge's area factor exponent (default 0.1; 0: the strength alone)
+//   --merge-separation S     the scale of the merge's embedding-separation factor (default 2; 0: off)
 //   --merge-min-area-fraction F  segments under this fraction of the area are merged first (default 0.005)
 //   --max-min-seeds
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
@@ -119,6 +120,7 @@ struct Options
   double band = -1;        // graph-cut band width (< 0: the default)
   double crease_angle = -1; // crease split angle in degrees (< 0: the default)
   double merge_size_exponent = -1; // < 0: the default
+  double merge_separation = -1;    // < 0: the default
   double merge_min_area_fraction = -1; // < 0: the default
   bool max_min_seeds = false; // K-means seeded by max-min in the embedding instead of the samples
 };
@@ -239,6 +241,8 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
     ko.crease_angle = o.crease_angle;
   if(o.merge_size_exponent >= 0.)
     ko.merge_size_exponent = o.merge_size_exponent;
+  if(o.merge_separation >= 0.)
+    ko.merge_separation_scale = o.merge_separation;
   if(o.merge_min_area_fraction >= 0.)
     ko.merge_min_area_fraction = o.merge_min_area_fraction;
   ko.seed_with_samples = !o.max_min_seeds;
@@ -437,6 +441,8 @@ int main(int argc, char** argv)
       o.crease_angle = std::stod(next());
     else if(a == "--merge-size-exponent")
       o.merge_size_exponent = std::stod(next());
+    else if(a == "--merge-separation")
+      o.merge_separation = std::stod(next());
     else if(a == "--merge-min-area-fraction")
       o.merge_min_area_fraction = std::stod(next());
     else if(a == "--thesis")

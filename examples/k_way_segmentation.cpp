@@ -16,6 +16,7 @@
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Refinement/crease_regions.h>
 #include <SpectralSeg/Refinement/merge_segments.h>
+#include <SpectralSeg/Refinement/sharp_crease_share.h>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/k_way_segmentation.h>
 
@@ -25,6 +26,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -99,6 +101,19 @@ int main(int argc, char** argv)
   const std::size_t left = SpectralSeg::Refinement::merge_weakest_boundaries(
     graph, SpectralSeg::Refinement::concave_angle_weights(graph), merged, 3);
   std::cout << "thesis's segments merged by hand: " << left << " segments\n";
+
+  // The same with the embedding-separation factor: pieces that overlap in
+  // the thesis's spectral embedding go first. segment_k_way() uses it on
+  // meshes whose folds are mostly blunt (a small sharp crease share).
+  SpectralSeg::Refinement::Embedding_separation separation;
+  separation.coordinates = &thesis.embedding.coordinates;
+  std::vector<int> separated = thesis.labels;
+  SpectralSeg::Refinement::merge_weakest_boundaries(graph, SpectralSeg::Refinement::concave_angle_weights(graph),
+                                                    separated, 3, std::numeric_limits<double>::infinity(), 0., 0.,
+                                                    separation);
+  std::cout << "sharp crease share " << SpectralSeg::Refinement::sharp_crease_share(graph)
+            << "; merged with the separation factor, Rand index error to the above "
+            << SpectralSeg::Evaluation::rand_index_error(merged, separated) << "\n";
 
   // The regions that closed loops of concave creases (45 degrees or more)
   // enclose, and the thesis's segments cut along them: what segment_k_way()

@@ -181,6 +181,60 @@ TEST_CASE("segments merge across their weakest boundary first", "[k_way][merge]"
     Refinement::merge_weakest_boundaries(g, ws, labels, 2, 1., 0., std::numeric_limits<double>::quiet_NaN()),
     Invalid_input);
 
+  // the embedding-separation factor: segments 1 and 2 overlap in a 1-D
+  // embedding, 0 lies far from both. By strength alone 0|1 (0.5) goes
+  // before 1|2 (0.55); with the factor 1|2 is nearly free.
+  Eigen::MatrixXd x(12, 1);
+  for(Eigen::Index f = 0; f < 12; ++f)
+    x(f, 0) = thirds[std::size_t(f)] == 0 ? 0.1 * double(f) : 10. + 0.1 * double(f % 4) + 0.05 * (thirds[std::size_t(f)] - 1);
+  std::vector<double> wt(g.number_of_edges(), 1.);
+  for(std::size_t d = 0; d < wt.size(); ++d)
+  {
+    const auto& e = g.edge(Dual_graph::size_type(d));
+    const int a = thirds[e.face[0]], b = thirds[e.face[1]];
+    if(a != b)
+      wt[d] = std::min(a, b) == 0 ? 0.5 : 0.55;
+  }
+  const double none = std::numeric_limits<double>::infinity();
+  labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, wt, labels, 2) == 2);
+  CHECK(labels[0] == labels[4]);
+  CHECK(labels[4] != labels[8]);
+  Refinement::Embedding_separation sep;
+  sep.coordinates = &x;
+  labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, wt, labels, 2, none, 0., 0., sep) == 2);
+  CHECK(labels[0] != labels[4]);
+  CHECK(labels[4] == labels[8]);
+  // a zero exponent, or a scale below the pair's separation, is no factor
+  sep.exponent = 0.;
+  labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, wt, labels, 2, none, 0., 0., sep) == 2);
+  CHECK(labels[0] == labels[4]);
+  sep.exponent = 1.;
+  sep.scale = 1e-6;
+  labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, wt, labels, 2, none, 0., 0., sep) == 2);
+  CHECK(labels[0] == labels[4]);
+  // the limit applies to the strength before the factor
+  sep.scale = 2.;
+  labels = thirds;
+  CHECK(Refinement::merge_weakest_boundaries(g, wt, labels, 2, 0.52, 0., 0., sep) == 2);
+  CHECK(labels[0] == labels[4]);
+  CHECK(labels[4] != labels[8]);
+  // bad arguments
+  Eigen::MatrixXd short_x(11, 1);
+  short_x.setZero();
+  Refinement::Embedding_separation bad;
+  bad.coordinates = &short_x;
+  CHECK_THROWS_AS(Refinement::merge_weakest_boundaries(g, wt, labels, 2, none, 0., 0., bad), Invalid_input);
+  bad.coordinates = &x;
+  bad.scale = 0.;
+  CHECK_THROWS_AS(Refinement::merge_weakest_boundaries(g, wt, labels, 2, none, 0., 0., bad), Invalid_input);
+  bad.scale = 2.;
+  bad.exponent = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(Refinement::merge_weakest_boundaries(g, wt, labels, 2, none, 0., 0., bad), Invalid_input);
+
   // a triangle soup: every face its own component, so every face its own
   // segment; nothing can merge, and the bookkeeping stays sparse (a dense
   // segment-by-segment table would need 2 x 20,000^2 doubles here)
@@ -465,6 +519,28 @@ TEST_CASE("crease regions: closed loops of concave creases bound the star's limb
   CHECK(labels == region);
   std::vector<int> short_labels(region.size() - 1, 0);
   CHECK_THROWS_AS(Refinement::split_along_regions(region, short_labels), Invalid_input);
+}
+
+TEST_CASE("sharp crease share: 1 on a box, 0 on a smooth sphere", "[merge]")
+{
+  const Dual_graph box = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::welded(test_meshes::box(1., 2., 3., 3))));
+  CHECK(Refinement::sharp_crease_share(box) == Approx(1.));
+  // the box's edges are right angles: not sharp from 100 degrees, not folded from 120
+  CHECK(Refinement::sharp_crease_share(box, 30., 100.) == 0.);
+  CHECK(Refinement::sharp_crease_share(box, 120., 150.) == 0.);
+  const Dual_graph ball = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::sphere(1., 24, 48)));
+  CHECK(Refinement::sharp_crease_share(ball) == 0.);
+  // a coarse ball folds its edges by 15 to 45 degrees: folded, none sharp
+  const Dual_graph coarse = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::sphere(1., 5, 8)));
+  CHECK(Refinement::sharp_crease_share(coarse, 30., 60.) == 0.);
+  CHECK(Refinement::sharp_crease_share(coarse, 30., 35.) > 0.);
+  CHECK_THROWS_AS(Refinement::sharp_crease_share(box, 60., 30.), Invalid_input);
+  CHECK_THROWS_AS(Refinement::sharp_crease_share(box, std::numeric_limits<double>::quiet_NaN(), 60.), Invalid_input);
+  // the k-way option's exponent: full on blunt meshes, none on sharp ones
+  CHECK(SpectralSeg::internal::separation_exponent(0.) == 1.);
+  CHECK(SpectralSeg::internal::separation_exponent(0.3) == Approx(1.));
+  CHECK(SpectralSeg::internal::separation_exponent(0.45) == Approx(0.5));
+  CHECK(SpectralSeg::internal::separation_exponent(0.9) == 0.);
 }
 
 TEST_CASE("banded graph cut: faces far from the boundaries keep their label, no segment vanishes", "[graphcut]")

@@ -83,6 +83,16 @@ struct Basic_K_way_options
   /// strong, the one around the smaller part is merged first; 0: the
   /// strength alone
   double merge_size_exponent = 0.1;
+  /// the merge's boundary strength is multiplied by the embedding-separation
+  /// factor with this scale (our addition; `Refinement::Embedding_separation`):
+  /// pieces of one body, which overlap in the spectral embedding, are merged
+  /// before a part is joined to the body. Its exponent follows the kind of
+  /// mesh: 1 where the folds are mostly blunt (scanned and sculpted shapes,
+  /// `Refinement::sharp_crease_share()` at most 0.3), 0 where they are mostly
+  /// sharp (machine parts, at least 0.6, whose patches the crease split and
+  /// the concave strength already tell apart), linear in between. 0 turns
+  /// it off.
+  double merge_separation_scale = 2.;
   /// with extra clusters (our addition): before the merge, each K-means
   /// cluster is split along the closed loops of concave creases of at least
   /// this dihedral angle, in degrees (`Refinement::crease_regions()`), so
@@ -100,6 +110,7 @@ struct Basic_K_way_options
     o.graph_cut = Refinement::Graph_cut_options();
     o.crease_angle = 0.;
     o.merge_size_exponent = 0.;
+    o.merge_separation_scale = 0.;
     return o;
   }
 
@@ -120,6 +131,7 @@ struct Basic_K_way_options
     o.merge_strength_limit = merge_strength_limit;
     o.merge_min_area_fraction = merge_min_area_fraction;
     o.merge_size_exponent = merge_size_exponent;
+    o.merge_separation_scale = merge_separation_scale;
     o.crease_angle = crease_angle;
     return o;
   }

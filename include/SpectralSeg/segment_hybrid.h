@@ -83,7 +83,7 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
   // a flat or convex mesh (or a zero metric) gives no contrast: such
   // boundaries are weak
   return Refinement::internal::merge_cheapest_boundaries(
-    graph, weights, labels, min_segments, min_area_fraction, [&](const Refinement::internal::Segment_boundary& x, double) {
+    graph, weights, labels, min_segments, min_area_fraction, [&](const Refinement::internal::Segment_boundary& x, double, double) {
       const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
       const double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
       return c * m < limit ? c * m : std::numeric_limits<double>::infinity();

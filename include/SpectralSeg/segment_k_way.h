@@ -15,6 +15,7 @@
 #include <SpectralSeg/Refinement/crease_regions.h>
 #include <SpectralSeg/Refinement/graph_cut_boundaries.h>
 #include <SpectralSeg/Refinement/merge_segments.h>
+#include <SpectralSeg/Refinement/sharp_crease_share.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/Stage_timer.h>
@@ -65,6 +66,14 @@ void kmeans_clusters(std::size_t k, const Basic_K_way_options<AffinityKernel>& o
   lap("k-means");
 }
 
+// The exponent of the merge's embedding-separation factor for a mesh whose
+// sharp_crease_share() is `share` (see K_way_options::merge_separation_scale):
+// 1 up to 0.3, 0 from 0.6, linear in between.
+inline double separation_exponent(double share)
+{
+  return std::max(0., std::min(1., (0.6 - share) / 0.3));
+}
+
 // Merge (when over-segmented), graph cut and connected segments on the k
 // K-means clusters of kmeans_clusters(): k_final segments.
 template <typename AffinityKernel>
@@ -79,11 +88,21 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
   // and a graph cut on that many labels would crawl: there, cut the K-means
   // clusters first and merge afterwards.
   std::vector<double> concave;
+  Refinement::Embedding_separation separation;
   const auto merge = [&](std::vector<int>& labels) {
     if(concave.empty())
+    {
       concave = Refinement::concave_angle_weights(graph.graph());
+      if(options.merge_separation_scale > 0.)
+      {
+        separation.coordinates = &coordinates;
+        separation.scale = options.merge_separation_scale;
+        separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
+      }
+    }
     return Refinement::merge_weakest_boundaries(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
-                                                options.merge_min_area_fraction, options.merge_size_exponent);
+                                                options.merge_min_area_fraction, options.merge_size_exponent,
+                                                separation);
   };
   Eigen::MatrixXd proxies = r.clusters.centroids;
   bool merged = false;
@@ -173,7 +192,8 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 /// \param k the number of segments wanted
 /// \param options every parameter of the method, the kernel included
 /// \param exec threads and progress callback
-/// \throws Invalid_input if `k` is 0 or larger than the number of faces
+/// \throws Invalid_input if `k` is 0 or larger than the number of faces, or
+///         `options.merge_separation_scale` is negative or not a number
 /// \throws Error if the affinity matrix has no positive eigenvalue after the first
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename AffinityKernel = Kernels::Exponential_kernel>
@@ -185,6 +205,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   if(k == 0 || k > n)
     throw Invalid_input("k-way segmentation: k = " + std::to_string(k) + " but the mesh has " + std::to_string(n) +
                         " faces (k must be between 1 and the number of faces)");
+  if(!(options.merge_separation_scale >= 0.))
+    throw Invalid_input("k-way segmentation: the merge separation scale must be a number of at least 0");
   K_way_result r;
   internal::Stage_timer lap(r.timings);
   if(k == 1 || n < 3)

@@ -47,6 +47,7 @@ struct Segment_options
   std::string graph_cut = "banded";
   double crease_angle = SpectralSeg::K_way_options().crease_angle;
   double merge_size_exponent = SpectralSeg::K_way_options().merge_size_exponent;
+  double merge_separation = SpectralSeg::K_way_options().merge_separation_scale;
   double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
   std::string labels, out_mesh, png, json;
   bool binary = false;   // PLY outputs in binary
@@ -92,6 +93,12 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
                   "smaller of its two segments to this power, so that small parts go before large ones (0: off)")
     ->capture_default_str()
     ->check(Finite_range(0., 10.));
+  cmd->add_option("--merge-separation", o.merge_separation,
+                  "with extra clusters, on meshes whose folds are mostly blunt: the merge weakens the boundary "
+                  "between two segments that overlap in the spectral embedding (pieces of one body), in proportion "
+                  "while their separation is below this scale (0: off)")
+    ->capture_default_str()
+    ->check(Finite_range(0., 1e6));
   cmd->add_option("--graph-cut-backend", o.graph_cut_backend,
                   "max-flow code of the graph cut: maxflow (fastest, GPL), boost-csr or boost-list (LGPL)")
     ->check(CLI::IsMember({"default", "maxflow", "boost-csr", "boost-list"}))
@@ -324,6 +331,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     options.graph_cut = SpectralSeg::Refinement::Graph_cut_options();
   options.crease_angle = o.crease_angle;
   options.merge_size_exponent = o.merge_size_exponent;
+  options.merge_separation_scale = o.merge_separation;
   if(o.graph_cut_backend == "maxflow")
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::maxflow;
   else if(o.graph_cut_backend == "boost-csr")

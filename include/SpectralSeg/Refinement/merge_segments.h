@@ -8,6 +8,8 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,6 +19,31 @@
 
 namespace SpectralSeg {
 namespace Refinement {
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief The embedding-separation factor of `merge_weakest_boundaries()`
+/// (our addition): how far apart two segments lie in the spectral embedding,
+/// against their spread.
+///
+/// For segments \f$a\f$ and \f$b\f$ with area-weighted mean embedding
+/// coordinates \f$\mu_a, \mu_b\f$ and mean squared distances to them
+/// \f$\sigma_a^2, \sigma_b^2\f$, the separation is \f$r = |\mu_a -
+/// \mu_b|^2 / (\sigma_a^2 + \sigma_b^2)\f$ and the boundary strength is
+/// multiplied by \f$\min(1, r / \mathrm{scale})^{\mathrm{exponent}}\f$.
+/// Two pieces of one round body that K-means cut apart overlap in the
+/// embedding (\f$r\f$ about 1), a limb and the body do not (\f$r\f$ of 2 to
+/// 10): on a bumpy surface, where a seam across the body can be as concave
+/// as a limb's junction, the body pieces are merged first.
+struct Embedding_separation
+{
+  /// one row of embedding coordinates per face (`K_way_result::embedding`);
+  /// null: no factor
+  const Eigen::MatrixXd* coordinates = nullptr;
+  /// separations of at least this much leave the strength as it is
+  double scale = 2.;
+  /// the power of the factor; 0: no factor
+  double exponent = 1.;
+};
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -29,10 +56,40 @@ struct Segment_boundary
   double length = 0., concave = 0., weight = 0.;
 };
 
+// The area-weighted sums of one segment's embedding coordinates and of their
+// squared norms, for Embedding_separation.
+struct Segment_moments
+{
+  Eigen::RowVectorXd sum;
+  double squares = 0., area = 0.;
+
+  void add(const Segment_moments& o)
+  {
+    sum += o.sum;
+    squares += o.squares;
+    area += o.area;
+  }
+};
+
+// |mu_a - mu_b|^2 / (sigma_a^2 + sigma_b^2) (see Embedding_separation);
+// infinite when both spreads are 0 and the means differ.
+inline double embedding_separation(const Segment_moments& a, const Segment_moments& b)
+{
+  if(!(a.area > 0.) || !(b.area > 0.))
+    return std::numeric_limits<double>::infinity();
+  const Eigen::RowVectorXd ma = a.sum / a.area, mb = b.sum / b.area;
+  const double spread =
+    std::max(0., a.squares / a.area - ma.squaredNorm()) + std::max(0., b.squares / b.area - mb.squaredNorm());
+  const double gap = (ma - mb).squaredNorm();
+  return gap > 0. ? (spread > 0. ? gap / spread : std::numeric_limits<double>::infinity()) : 0.;
+}
+
 // Merges adjacent segments, cheapest boundary first: segments under
 // `min_area_fraction` of the area first (smallest first, whatever their
-// boundary), then the pair with the lowest `cost(boundary, smaller)`, where
-// `smaller` is the area of the pair's smaller segment over the mesh's area,
+// boundary), then the pair with the lowest `cost(boundary, smaller,
+// separation)`, where `smaller` is the area of the pair's smaller segment
+// over the mesh's area and `separation` the pair's embedding_separation()
+// in `coordinates` (one row per face; infinite when `coordinates` is null),
 // while it is finite and more than `min_segments` are left. `weights` may be
 // empty (then Segment_boundary::weight is 0). Ties go to the pair with the
 // smallest labels. Labels are renumbered 0 .. count-1 by their smallest
@@ -40,7 +97,7 @@ struct Segment_boundary
 template <typename Cost>
 std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                       std::vector<int>& labels, std::size_t min_segments, double min_area_fraction,
-                                      const Cost& cost)
+                                      const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr)
 {
   const std::size_t n = graph.number_of_faces();
   // dense labels 0 .. s-1 in order of first face
@@ -75,6 +132,20 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
     total_area += graph.geometry().areas[f];
   }
   const double small = min_area_fraction * total_area;
+  std::vector<Segment_moments> moments(coordinates ? s : 0);
+  if(coordinates)
+  {
+    for(Segment_moments& m : moments)
+      m.sum = Eigen::RowVectorXd::Zero(coordinates->cols());
+    for(std::size_t f = 0; f < n; ++f) // in face order: thread-independent
+    {
+      Segment_moments& m = moments[std::size_t(labels[f])];
+      const double a = graph.geometry().areas[f];
+      m.sum += a * coordinates->row(static_cast<Eigen::Index>(f));
+      m.squares += a * coordinates->row(static_cast<Eigen::Index>(f)).squaredNorm();
+      m.area += a;
+    }
+  }
   for(std::size_t count = s; count > min_segments; --count)
   {
     double cheapest = std::numeric_limits<double>::infinity();
@@ -87,7 +158,9 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
           continue;
         const double c = std::min(area[a], area[b]) < small
                            ? -1. + std::min(area[a], area[b]) / small // in [-1, 0): before every boundary
-                           : cost(nb.second, std::min(area[a], area[b]) / total_area);
+                           : cost(nb.second, std::min(area[a], area[b]) / total_area,
+                                  coordinates ? embedding_separation(moments[a], moments[b])
+                                              : std::numeric_limits<double>::infinity());
         if(c < cheapest) // strict: ties go to the smallest labels
         {
           cheapest = c;
@@ -112,6 +185,8 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
     }
     boundary[wb].clear();
     area[wa] += area[wb];
+    if(coordinates)
+      moments[wa].add(moments[wb]);
     for(std::size_t& t : target)
       if(t == wb)
         t = wa;
@@ -141,7 +216,10 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
 /// area of the pair's smaller segment over the mesh's area and \f$e\f$ the
 /// exponent: of two boundaries about as strong, the one around the smaller
 /// part goes first, since giving up a small part changes less of the
-/// surface than joining two large ones. Ties go to the pair with the smallest
+/// surface than joining two large ones. With `separation.coordinates` the
+/// strength is also multiplied by the embedding-separation factor
+/// (`Embedding_separation`), so that pieces of one body go before parts.
+/// Ties go to the pair with the smallest
 /// labels, so the result is deterministic. Segments with no neighbour (whole
 /// connected components) are never merged, so more than `k` may remain.
 /// Labels are renumbered `0 .. count-1` by their smallest face.
@@ -160,26 +238,43 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
 ///        (0: the strength alone; `segment_k_way()` uses
 ///        `K_way_options::merge_size_exponent`); `strength_limit` applies to
 ///        the strength before the factor
-/// \throws Invalid_input if the sizes do not match the graph or
-///         `size_exponent` is negative or not a number
+/// \param separation the embedding-separation factor (default: none;
+///        `segment_k_way()` uses `K_way_options::merge_separation_scale`);
+///        `strength_limit` applies to the strength before the factor
+/// \throws Invalid_input if the sizes do not match the graph,
+///         `size_exponent` or `separation.exponent` is negative or not a
+///         number, or `separation.scale` is not positive
 inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                             std::vector<int>& labels, std::size_t k,
                                             double strength_limit = std::numeric_limits<double>::infinity(),
-                                            double min_area_fraction = 0., double size_exponent = 0.)
+                                            double min_area_fraction = 0., double size_exponent = 0.,
+                                            const Embedding_separation& separation = Embedding_separation())
 {
   if(labels.size() != graph.number_of_faces() || weights.size() != graph.number_of_edges())
     throw Invalid_input("merge_weakest_boundaries: expected " + std::to_string(graph.number_of_faces()) +
                         " labels and " + std::to_string(graph.number_of_edges()) + " weights");
   if(!(size_exponent >= 0.))
     throw Invalid_input("merge_weakest_boundaries: the size exponent must be a number of at least 0");
+  if(separation.coordinates &&
+     separation.coordinates->rows() != static_cast<Eigen::Index>(graph.number_of_faces()))
+    throw Invalid_input("merge_weakest_boundaries: expected " + std::to_string(graph.number_of_faces()) +
+                        " rows of embedding coordinates, got " + std::to_string(separation.coordinates->rows()));
+  if(separation.coordinates && !(separation.exponent >= 0. && separation.scale > 0.))
+    throw Invalid_input(
+      "merge_weakest_boundaries: the separation scale must be positive and its exponent a number of at least 0");
+  const bool separate = separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0;
   return internal::merge_cheapest_boundaries(
     graph, weights, labels, k, min_area_fraction,
-    [strength_limit, size_exponent](const internal::Segment_boundary& b, double smaller) {
+    [strength_limit, size_exponent, &separation](const internal::Segment_boundary& b, double smaller, double r) {
       const double mean = b.weight / b.length;
       if(mean >= strength_limit)
         return std::numeric_limits<double>::infinity();
-      return size_exponent > 0. ? mean * std::pow(smaller, size_exponent) : mean;
-    });
+      double c = size_exponent > 0. ? mean * std::pow(smaller, size_exponent) : mean;
+      if(r < separation.scale) // r is infinite without coordinates
+        c *= std::pow(r / separation.scale, separation.exponent);
+      return c;
+    },
+    separate ? separation.coordinates : nullptr);
 }
 
 /// \ingroup PkgSpectralSegRefinement
