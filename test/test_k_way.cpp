@@ -541,6 +541,18 @@ TEST_CASE("sharp crease share: 1 on a box, 0 on a smooth sphere", "[merge]")
   CHECK(SpectralSeg::internal::separation_exponent(0.3) == Approx(1.));
   CHECK(SpectralSeg::internal::separation_exponent(0.45) == Approx(0.5));
   CHECK(SpectralSeg::internal::separation_exponent(0.9) == 0.);
+  // segment_k_way() with and without the factor: k segments either way; a
+  // negative or NaN scale is refused
+  const Star& s = star();
+  K_way_options o;
+  o.merge_separation_scale = 0.;
+  CHECK(segment_k_way(s.weighted, 5, o).number_of_segments == 5);
+  o.merge_separation_scale = 2.;
+  CHECK(segment_k_way(s.weighted, 5, o).number_of_segments == 5);
+  o.merge_separation_scale = -1.;
+  CHECK_THROWS_AS(segment_k_way(s.weighted, 5, o), Invalid_input);
+  o.merge_separation_scale = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(segment_k_way(s.weighted, 5, o), Invalid_input);
 }
 
 TEST_CASE("banded graph cut: faces far from the boundaries keep their label, no segment vanishes", "[graphcut]")
