@@ -291,6 +291,9 @@ std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g
   const SpectralSeg::Weighted_dual_graph wg(g, w);
   SpectralSeg::Hybrid_options ho;
   ho.k_way.boundary_enhancement = o.graph_cut;
+  ho.k_way.embedding.seed = o.seed;
+  if(o.merge_separation >= 0.)
+    ho.k_way.merge_separation_scale = o.merge_separation;
   if(o.auto_contrast > 0 && o.auto_contrast_given)
     ho.min_boundary_contrast = o.auto_contrast;
   return SpectralSeg::segment_hybrid(wg, ho, exec).labels;

@@ -491,6 +491,57 @@ TEST_CASE("hybrid segmentation finds the star's parts, deterministically, and ch
     bad.min_boundary_contrast = c;
     CHECK_THROWS_AS(segment_hybrid(s.weighted, bad), Invalid_input);
   }
+  for(double c : {-1., std::numeric_limits<double>::quiet_NaN()})
+  {
+    bad = Hybrid_options();
+    bad.k_way.merge_separation_scale = c;
+    CHECK_THROWS_AS(segment_hybrid(s.weighted, bad), Invalid_input);
+  }
+  Hybrid_options off;
+  off.k_way.merge_separation_scale = 0.;
+  CHECK(segment_hybrid(s.weighted, off).number_of_segments >= 2);
+}
+
+TEST_CASE("contrast merge: the embedding separation orders the merges, the limit stays on the contrast", "[hybrid][merge]")
+{
+  // a strip of 12 unit squares (24 faces) folded into valleys at x = 4
+  // (0.5 rad) and x = 8 (0.55 rad): three segments of 8 faces
+  test_meshes::Soup soup = test_meshes::square_strip(12);
+  const double t1 = std::tan(0.5), t2 = std::tan(1.05);
+  for(auto& p : soup.points)
+    p[2] = p[0] <= 4. ? 0. : p[0] <= 8. ? t1 * (p[0] - 4.) : t1 * 4. + t2 * (p[0] - 8.);
+  const Dual_graph g = make_dual_graph(test_meshes::to_mesh<Mesh>(soup));
+  REQUIRE(g.number_of_faces() == 24);
+  std::vector<int> thirds(24);
+  for(std::size_t f = 0; f < 24; ++f)
+    thirds[f] = int(f / 8);
+  const std::vector<double> w(g.number_of_edges(), 1.);
+  // by contrast alone 0|1 (the weaker fold) goes first
+  std::vector<int> labels = thirds;
+  CHECK(internal::merge_by_contrast(g, w, labels, 2, 1e6, 0.) == 2);
+  CHECK(labels[0] == labels[8]);
+  CHECK(labels[8] != labels[16]);
+  // segments 1 and 2 overlap in a 1-D embedding, 0 lies far from both: 1|2 goes first
+  Eigen::MatrixXd x(24, 1);
+  for(Eigen::Index f = 0; f < 24; ++f)
+    x(f, 0) = thirds[std::size_t(f)] == 0 ? 0.1 * double(f) : 10. + 0.1 * double(f % 8);
+  Refinement::Embedding_separation sep;
+  sep.coordinates = &x;
+  labels = thirds;
+  CHECK(internal::merge_by_contrast(g, w, labels, 2, 1e6, 0., sep) == 2);
+  CHECK(labels[0] != labels[8]);
+  CHECK(labels[8] == labels[16]);
+  // a limit between the two folds' contrasts (their angles over the mesh's
+  // mean concave angle, L / 1.05 with L the dual edges' total length, times
+  // a metric contrast of 1): only the weaker fold may go, whatever the
+  // factor says of the stronger one
+  double total = 0.;
+  for(std::size_t d = 0; d < g.number_of_edges(); ++d)
+    total += g.edge(Dual_graph::size_type(d)).length;
+  labels = thirds;
+  CHECK(internal::merge_by_contrast(g, w, labels, 1, 0.525 * total / 1.05, 0., sep) == 2);
+  CHECK(labels[0] == labels[8]);
+  CHECK(labels[8] != labels[16]);
 }
 
 TEST_CASE("crease regions: closed loops of concave creases bound the star's limbs", "[k_way][creases]")

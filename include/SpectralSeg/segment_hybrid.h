@@ -12,6 +12,7 @@
 #include <SpectralSeg/Refinement/connected_segments.h>
 #include <SpectralSeg/Refinement/graph_cut_boundaries.h>
 #include <SpectralSeg/Refinement/merge_segments.h>
+#include <SpectralSeg/Refinement/sharp_crease_share.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/Stage_timer.h>
@@ -34,10 +35,13 @@ namespace SpectralSeg {
 template <typename AffinityKernel = Kernels::Exponential_kernel>
 struct Basic_hybrid_options
 {
-  /// the embedding, K-means and graph-cut settings, the affinity kernel and
+  /// the embedding, K-means and graph-cut settings, the affinity kernel,
   /// `merge_min_area_fraction` (0.005 by default: segments under 0.5% of the
-  /// area are merged first, whatever their boundary); `extra_clusters`,
-  /// `alternative_extra_clusters` and `merge_strength_limit` are not used
+  /// area are merged first, whatever their boundary) and
+  /// `merge_separation_scale` (the merge order's embedding-separation
+  /// factor, as in `segment_k_way()`; 0: none); `extra_clusters`,
+  /// `alternative_extra_clusters`, `merge_strength_limit`,
+  /// `merge_size_exponent` and `crease_angle` are not used
   Basic_K_way_options<AffinityKernel> k_way;
   /// the number of K-means clusters of the over-segmentation (default 20);
   /// at least 2
@@ -63,11 +67,15 @@ namespace internal {
 // Merges adjacent segments, weakest boundary first: segments under
 // `small` area first (smallest first, whatever their boundary), then the
 // pair with the lowest product of the two contrasts while it is below
-// `limit` and more than `min_segments` are left. Labels renumbered by their
-// smallest face; returns the number of segments.
+// `limit` and more than `min_segments` are left; with
+// `separation.coordinates` the pairs are taken in the order of that product
+// times the embedding-separation factor (the limit still applies to the
+// product alone). Labels renumbered by their smallest face; returns the
+// number of segments.
 inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
                                      std::vector<int>& labels, std::size_t min_segments, double limit,
-                                     double min_area_fraction)
+                                     double min_area_fraction,
+                                     const Refinement::Embedding_separation& separation = Refinement::Embedding_separation())
 {
   // mesh means, weighted by edge length
   double length = 0., concave = 0., metric = 0.;
@@ -83,11 +91,17 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
   // a flat or convex mesh (or a zero metric) gives no contrast: such
   // boundaries are weak
   return Refinement::internal::merge_cheapest_boundaries(
-    graph, weights, labels, min_segments, min_area_fraction, [&](const Refinement::internal::Segment_boundary& x, double, double) {
+    graph, weights, labels, min_segments, min_area_fraction, [&](const Refinement::internal::Segment_boundary& x, double, double r) {
       const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
       const double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
-      return c * m < limit ? c * m : std::numeric_limits<double>::infinity();
-    });
+      if(!(c * m < limit))
+        return std::numeric_limits<double>::infinity();
+      // the order, not the limit, follows the separation (r is infinite
+      // without coordinates)
+      return r < separation.scale ? c * m * std::pow(r / separation.scale, separation.exponent) : c * m;
+    },
+    separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0 ? separation.coordinates
+                                                                                            : nullptr);
 }
 
 } // namespace internal
@@ -107,7 +121,11 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
 /// 3. the two adjacent segments whose boundary has the lowest contrast are
 ///    merged, for as long as that contrast is below
 ///    `options.min_boundary_contrast` and more than `options.min_segments`
-///    are left. The contrast of a boundary is the geometric mean of two
+///    are left. On meshes whose folds are mostly blunt the pairs are taken
+///    in the order of their contrast times the embedding-separation factor
+///    of `segment_k_way()` (`options.k_way.merge_separation_scale`,
+///    `Refinement::Embedding_separation`), so that pieces of one body go
+///    before a part; the limit applies to the contrast alone. The contrast of a boundary is the geometric mean of two
 ///    ratios, both means weighted by edge length: its mean concave dihedral
 ///    angle over the mesh's (parts meet at concave creases) and its mean
 ///    dual-edge weight (`graph.weights()`, the part-aware metric in the
@@ -132,8 +150,9 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
 /// \param options the parameters
 /// \param exec threads and progress callback
 /// \throws Invalid_input if `options.clusters` is below 2,
-///         `options.min_segments` is 0, or `options.min_boundary_contrast`
-///         is not finite and positive
+///         `options.min_segments` is 0, `options.min_boundary_contrast`
+///         is not finite and positive, or
+///         `options.k_way.merge_separation_scale` is negative or not a number
 /// \throws Error if the affinity matrix has no positive eigenvalue after the first
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename AffinityKernel = Kernels::Exponential_kernel>
@@ -147,6 +166,8 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     throw Invalid_input("hybrid segmentation: the smallest number of segments must be at least 1");
   if(!std::isfinite(options.min_boundary_contrast) || !(options.min_boundary_contrast > 0.))
     throw Invalid_input("hybrid segmentation: the boundary contrast limit must be finite and positive");
+  if(!(options.k_way.merge_separation_scale >= 0.))
+    throw Invalid_input("hybrid segmentation: the merge separation scale must be a number of at least 0");
   const std::size_t n = graph.graph().number_of_faces();
   K_way_result r;
   internal::Stage_timer lap(r.timings);
@@ -172,8 +193,15 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   r.labels = r.clusters.labels;
   Refinement::make_segments_connected(graph.graph(), r.labels);
   const double limit = options.min_boundary_contrast * options.min_boundary_contrast;
+  Refinement::Embedding_separation separation;
+  if(options.k_way.merge_separation_scale > 0.)
+  {
+    separation.coordinates = &r.embedding.coordinates;
+    separation.scale = options.k_way.merge_separation_scale;
+    separation.exponent = internal::separation_exponent(Refinement::sharp_crease_share(graph.graph()));
+  }
   const std::size_t m = internal::merge_by_contrast(graph.graph(), graph.weights(), r.labels, options.min_segments,
-                                                    limit, options.k_way.merge_min_area_fraction);
+                                                    limit, options.k_way.merge_min_area_fraction, separation);
   lap("merge");
   // with more segments than clusters (a mesh of many connected components)
   // a graph cut on that many labels would crawl: it is skipped there
