@@ -26,7 +26,7 @@
 //   --auto-contrast C  its merge limit (boundary's mean concave angle over the mesh's, default 3)
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
 //   --extra-clusters N  K-means clusters beyond k, merged back (default 3; 0 = thesis)
-//   --alternative-extra-clusters A,B  also tried, the lowest concave normalized cut kept (default none)
+//   --alternative-extra-clusters A,B  also tried, the lowest concave normalized cut kept (default: the library's; none: only --extra-clusters)
 //   --cut-angle-scale S  concavity scale (radians) of that normalized cut (default 0.1)
 //   --seed S       start face of the Nyström sampling
 //   --thesis       the thesis's k-way method (K_way_options::thesis(): no extra clusters, its graph cut,
@@ -366,9 +366,10 @@ void render_best_and_worst(const Options& o, std::vector<Row> rows)
   }
 }
 
-} // namespace
+// the option being read, for the error message of a bad value
+std::string parsed_option;
 
-int main(int argc, char** argv)
+int run(int argc, char** argv)
 {
   std::vector<std::string> args(argv + 1, argv + argc);
   if(!args.empty() && args[0] == "--merge")
@@ -393,6 +394,7 @@ int main(int argc, char** argv)
   for(std::size_t i = 1; i < args.size(); ++i)
   {
     const std::string& a = args[i];
+    parsed_option = a;
     auto next = [&]() -> std::string {
       if(i + 1 >= args.size())
         throw std::runtime_error("missing value after " + a);
@@ -470,7 +472,11 @@ int main(int argc, char** argv)
     else if(a == "--extra-clusters")
       o.extra_clusters = std::stoi(next());
     else if(a == "--alternative-extra-clusters")
+    {
       o.alternative_extra_clusters = next();
+      if(o.alternative_extra_clusters == "none")
+        o.alternative_extra_clusters.clear();
+    }
     else if(a == "--cut-angle-scale")
       o.cut_angle_scale = std::stod(next());
     else if(a == "--samples-factor")
@@ -484,6 +490,7 @@ int main(int argc, char** argv)
     else
       throw std::runtime_error("unknown option " + a);
   }
+  parsed_option.clear();
 
   std::ifstream index(fs::path(o.dir) / "index.tsv");
   if(!index)
@@ -564,4 +571,27 @@ int main(int argc, char** argv)
   if(!o.png_dir.empty())
     render_best_and_worst(o, rows);
   return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    return run(argc, argv);
+  }
+  catch(const std::logic_error& e) // std::stod and the like
+  {
+    if(parsed_option.empty())
+      std::fprintf(stderr, "error: %s\n", e.what());
+    else
+      std::fprintf(stderr, "error: bad value after %s (%s)\n", parsed_option.c_str(), e.what());
+    return 1;
+  }
+  catch(const std::exception& e)
+  {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
 }
