@@ -31,6 +31,16 @@ macro(run)
   message("$ ${_command}  -> ${rc}")
 endmacro()
 
+# The consumer projects find the CGAL of this build (CGAL_DIR; a CGAL 6
+# build without gmpxx, CGAL_WITH_GMPXX=OFF, too).
+set(cgal_args "")
+if(CGAL_DIR)
+  list(APPEND cgal_args -DCGAL_DIR=${CGAL_DIR})
+endif()
+if(NOT "${CGAL_WITH_GMPXX}" STREQUAL "")
+  list(APPEND cgal_args -DCGAL_WITH_GMPXX=${CGAL_WITH_GMPXX})
+endif()
+
 # 1. this build, installed
 set(prefix ${WORK}/prefix)
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
@@ -59,7 +69,7 @@ if(TOOL)
 endif()
 
 # 2. install after a configure only: the package, no tool, no failure
-run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK}/configured_only -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK}/configured_only -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release ${cgal_args})
 if(NOT rc EQUAL 0)
   fail("configure of a fresh build tree: ${out}")
 endif()
@@ -99,19 +109,19 @@ if(WITH_RENDERING)
 endif()
 string(REPLACE ";" "," components_arg "${components}")
 run(${CMAKE_COMMAND} -S ${probe} -B ${probe}/found -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix}
-    "-DCOMPONENTS=${components_arg}")
+    "-DCOMPONENTS=${components_arg}" ${cgal_args})
 if(NOT rc EQUAL 0 OR NOT out MATCHES "probe: version ${VERSION} ")
   fail("find_package(SpectralSeg REQUIRED COMPONENTS ${components}) with them installed: ${out}")
 elseif(NOT out MATCHES "definitions ${expect_definitions}\n")
   fail("SpectralSeg::SpectralSeg should define ${expect_definitions}: ${out}")
 endif()
 run(${CMAKE_COMMAND} -S ${probe} -B ${probe}/without -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix}
-    -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCMAKE_DISABLE_FIND_PACKAGE_embree=ON)
+    -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCMAKE_DISABLE_FIND_PACKAGE_embree=ON ${cgal_args})
 if(NOT rc EQUAL 0 OR NOT out MATCHES "TBB FALSE Embree FALSE Rendering [A-Z]+ definitions SPECTRALSEG_USE_MAXFLOW\n")
   fail("a consumer without TBB and Embree must find SpectralSeg, without them: ${out}")
 endif()
 run(${CMAKE_COMMAND} -S ${probe} -B ${probe}/required -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix}
-    -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCOMPONENTS=TBB)
+    -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCOMPONENTS=TBB ${cgal_args})
 if(rc EQUAL 0)
   fail("find_package(SpectralSeg REQUIRED COMPONENTS TBB) must fail without TBB: ${out}")
 endif()
@@ -130,7 +140,7 @@ endforeach()
 #    machine without TBB and Embree), run on a shipped mesh
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/test/install_consumer -B ${WORK}/consumer -G ${GENERATOR}
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix}
-    -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCMAKE_DISABLE_FIND_PACKAGE_embree=ON)
+    -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCMAKE_DISABLE_FIND_PACKAGE_embree=ON ${cgal_args})
 if(NOT rc EQUAL 0)
   fail("configure of the consumer project: ${out}")
 else()

@@ -10,6 +10,7 @@
 #include <SpectralSeg/named_parameters.h>
 
 #include <boost/graph/compressed_sparse_row_graph.hpp>
+#include <boost/range/iterator_range.hpp>
 
 #include <algorithm>
 #include <cmath>

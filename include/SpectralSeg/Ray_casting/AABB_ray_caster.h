@@ -7,9 +7,15 @@
 
 #include <SpectralSeg/Mesh_geometry.h>
 
-#include <CGAL/AABB_traits.h>
+#include <CGAL/version.h>
 #include <CGAL/AABB_tree.h>
+#if CGAL_VERSION_NR >= 1060000000 // CGAL 6 renamed them (the old names are deprecated)
+#include <CGAL/AABB_traits_3.h>
+#include <CGAL/AABB_triangle_primitive_3.h>
+#else
+#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#endif
 #include <CGAL/Simple_cartesian.h>
 
 #include <Eigen/Core>
@@ -35,8 +41,13 @@ class AABB_ray_caster
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef std::vector<K::Triangle_3>::const_iterator Iterator;
+#if CGAL_VERSION_NR >= 1060000000
+  typedef CGAL::AABB_triangle_primitive_3<K, Iterator> Primitive;
+  typedef CGAL::AABB_traits_3<K, Primitive> Traits;
+#else
   typedef CGAL::AABB_triangle_primitive<K, Iterator> Primitive;
   typedef CGAL::AABB_traits<K, Primitive> Traits;
+#endif
   typedef CGAL::AABB_tree<Traits> Tree;
 
 public:
