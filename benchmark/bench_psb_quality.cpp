@@ -37,6 +37,7 @@
 //   --merge-size-exponent E  the merge's area factor exponent (default 0.1; 0: the strength alone)
 //   --merge-separation S     the scale of the merge's embedding-separation factor (default 2; 0: off)
 //   --merge-min-area-fraction F  segments under this fraction of the area are merged first (default 0.005)
+//   --neck-scale S  the contrast merge's neck-ratio scale (default 0.4; 0: no neck factor)
 //   --max-min-seeds
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
@@ -122,6 +123,7 @@ struct Options
   double merge_size_exponent = -1; // < 0: the default
   double merge_separation = -1;    // < 0: the default
   double merge_min_area_fraction = -1; // < 0: the default
+  double neck_scale = -1;          // contrast merge: < 0: the default
   bool max_min_seeds = false; // K-means seeded by max-min in the embedding instead of the samples
 };
 
@@ -173,6 +175,29 @@ void print_tables(const std::vector<Row>& rows, std::FILE* to = stdout)
   std::fprintf(to, "| **all (%d models)** |", overall.begin()->second.second);
   for(const auto& m : methods)
     std::fprintf(to, " **%.3f** |", overall[m].first / overall[m].second);
+  // psb-dev's two parts: the 38 models of the first subset (ids ending in
+  // 1) and the 57 added later, which no setting was tuned on before them
+  for(const bool first : {true, false})
+  {
+    std::map<std::string, std::pair<double, int>> part;
+    for(const Row& r : rows)
+      if(!r.id.empty() && (r.id.back() == '1') == first)
+      {
+        part[r.method].first += r.ri_error;
+        ++part[r.method].second;
+      }
+    if(part.empty() || part.begin()->second.second == overall.begin()->second.second)
+      continue;
+    std::fprintf(to, "\n| %s (%d models) |", first ? "ids ending in 1" : "the other ids", part.begin()->second.second);
+    for(const auto& m : methods)
+      std::fprintf(to, " %.3f |", part[m].second ? part[m].first / part[m].second : 0.);
+  }
+  std::map<std::string, double> segments;
+  for(const Row& r : rows)
+    segments[r.method] += double(r.segments);
+  std::fprintf(to, "\n| segments per model |");
+  for(const auto& m : methods)
+    std::fprintf(to, " %.1f |", segments[m] / overall[m].second);
   std::fprintf(to, "\n| total time (s) |");
   for(const auto& m : methods)
     std::fprintf(to, " %.1f |", time[m]);
@@ -296,6 +321,8 @@ std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g
     ho.k_way.merge_separation_scale = o.merge_separation;
   if(o.auto_contrast > 0 && o.auto_contrast_given)
     ho.min_boundary_contrast = o.auto_contrast;
+  if(o.neck_scale >= 0.)
+    ho.neck_scale = o.neck_scale;
   return SpectralSeg::segment_hybrid(wg, ho, exec).labels;
 }
 
@@ -448,6 +475,8 @@ int run(int argc, char** argv)
       o.merge_size_exponent = std::stod(next());
     else if(a == "--merge-separation")
       o.merge_separation = std::stod(next());
+    else if(a == "--neck-scale")
+      o.neck_scale = std::stod(next());
     else if(a == "--merge-min-area-fraction")
       o.merge_min_area_fraction = std::stod(next());
     else if(a == "--thesis")

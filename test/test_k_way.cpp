@@ -544,6 +544,48 @@ TEST_CASE("contrast merge: the embedding separation orders the merges, the limit
   CHECK(labels[8] != labels[16]);
 }
 
+TEST_CASE("contrast merge: the neck ratio keeps the compact part and merges the long one, at any scale",
+          "[hybrid][merge]")
+{
+  // a strip of 12 unit squares folded into valleys at x = 2 (0.55 rad) and
+  // x = 8 (0.5 rad): segments of 4, 12 and 8 faces (areas 2, 6 and 4),
+  // every boundary of length 1. By contrast alone the weaker fold, 1|2,
+  // goes first; with the neck factor its larger neck ratio (sqrt(4) against
+  // sqrt(2)) outweighs the angle and 0|1 goes first.
+  for(double scale : {1., 10.})
+  {
+    test_meshes::Soup soup = test_meshes::square_strip(12);
+    const double t1 = std::tan(0.55), t2 = std::tan(1.05);
+    for(auto& p : soup.points)
+    {
+      p[2] = p[0] <= 2. ? 0. : p[0] <= 8. ? t1 * (p[0] - 2.) : t1 * 6. + t2 * (p[0] - 8.);
+      for(double& c : p)
+        c *= scale;
+    }
+    const Dual_graph g = make_dual_graph(test_meshes::to_mesh<Mesh>(soup));
+    REQUIRE(g.number_of_faces() == 24);
+    std::vector<int> parts(24);
+    for(std::size_t f = 0; f < 24; ++f)
+      parts[f] = f < 4 ? 0 : f < 16 ? 1 : 2;
+    const std::vector<double> w(g.number_of_edges(), 1.);
+    INFO("scale " << scale);
+    std::vector<int> labels = parts;
+    CHECK(internal::merge_by_contrast(g, w, labels, 2, 1e6, 0.) == 2);
+    CHECK(labels[0] != labels[4]);
+    CHECK(labels[4] == labels[16]);
+    labels = parts;
+    CHECK(internal::merge_by_contrast(g, w, labels, 2, 1e6, 0., Refinement::Embedding_separation(), 0.4) == 2);
+    CHECK(labels[0] == labels[4]);
+    CHECK(labels[4] != labels[16]);
+  }
+  Hybrid_options bad;
+  for(double c : {-1., std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
+  {
+    bad.neck_scale = c;
+    CHECK_THROWS_AS(segment_hybrid(star().weighted, bad), Invalid_input);
+  }
+}
+
 TEST_CASE("crease regions: closed loops of concave creases bound the star's limbs", "[k_way][creases]")
 {
   const Star& s = star();

@@ -54,6 +54,15 @@ struct Basic_hybrid_options
   /// its metric contrast (its mean dual-edge weight over the mesh's), all
   /// means weighted by edge length; finite and positive
   double min_boundary_contrast = 4.;
+  /// the neck ratio's scale (default 0.4; 0: no neck factor, the contrast
+  /// merge until 2026-11-25): the metric contrast of a boundary is
+  /// multiplied by its neck ratio \f$\sqrt{a}/\ell\f$ over this, where
+  /// \f$a\f$ is the area of the smaller of the two segments and \f$\ell\f$
+  /// the boundary's length. A limb or a handle meets the rest along a short
+  /// loop for its area (a large ratio: kept), a slice of a body along a long
+  /// one (a small ratio: merged). The ratio does not depend on the mesh's
+  /// scale or resolution. At least 0
+  double neck_scale = 0.4;
 };
 
 /// \ingroup PkgSpectralSegAutomatic
@@ -67,7 +76,9 @@ namespace internal {
 // Merges adjacent segments, weakest boundary first: segments under
 // `small` area first (smallest first, whatever their boundary), then the
 // pair with the lowest product of the two contrasts while it is below
-// `limit` and more than `min_segments` are left; with
+// `limit` and more than `min_segments` are left (with a positive
+// `neck_scale` the metric contrast is multiplied by the pair's neck ratio
+// over `neck_scale`); with
 // `separation.coordinates` the pairs are taken in the order of that product
 // times the embedding-separation factor (the limit still applies to the
 // product alone). Labels renumbered by their smallest face; returns the
@@ -75,7 +86,8 @@ namespace internal {
 inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
                                      std::vector<int>& labels, std::size_t min_segments, double limit,
                                      double min_area_fraction,
-                                     const Refinement::Embedding_separation& separation = Refinement::Embedding_separation())
+                                     const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
+                                     double neck_scale = 0.)
 {
   // mesh means, weighted by edge length
   double length = 0., concave = 0., metric = 0.;
@@ -88,12 +100,17 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
   }
   const double mean_concave = length > 0. ? concave / length : 0.;
   const double mean_metric = length > 0. ? metric / length : 0.;
+  double total_area = 0.;
+  for(double a : graph.geometry().areas)
+    total_area += a;
   // a flat or convex mesh (or a zero metric) gives no contrast: such
   // boundaries are weak
   return Refinement::internal::merge_cheapest_boundaries(
-    graph, weights, labels, min_segments, min_area_fraction, [&](const Refinement::internal::Segment_boundary& x, double, double r) {
+    graph, weights, labels, min_segments, min_area_fraction, [&](const Refinement::internal::Segment_boundary& x, double smaller, double r) {
       const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
-      const double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
+      double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
+      if(neck_scale > 0.) // the neck ratio: large around a limb, small across a slice of a body
+        m *= std::sqrt(smaller * total_area) / x.length / neck_scale;
       if(!(c * m < limit))
         return std::numeric_limits<double>::infinity();
       // the order, not the limit, follows the separation (r is infinite
@@ -130,11 +147,14 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
 ///    angle over the mesh's (parts meet at concave creases) and its mean
 ///    dual-edge weight (`graph.weights()`, the part-aware metric in the
 ///    usual pipeline) over the mesh's (parts differ in thickness, which the
-///    volumetric term of the metric sees). A boundary is kept only when both
-///    say it separates parts, so K-means' cuts through smooth bodies and
-///    through creased but uniform regions are both undone. Both ratios are
-///    relative to the mesh, so the limit does not depend on resolution or
-///    scale;
+///    volumetric term of the metric sees), the second multiplied by the
+///    boundary's neck ratio (`options.neck_scale`: parts are protrusions,
+///    which meet the rest along a short loop for their area, while K-means
+///    also slices bodies along long ones). A boundary is kept only when
+///    both say it separates parts, so K-means' cuts through smooth bodies and
+///    through creased but uniform regions are both undone. The ratios are
+///    relative to the mesh or free of units, so the limit does not depend
+///    on resolution or scale;
 /// 4. graph-cut boundary enhancement on the merged segments, their mean
 ///    embedding as proxies (optional, `options.k_way.boundary_enhancement`;
 ///    skipped when connected components leave more segments than clusters),
@@ -151,8 +171,9 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
 /// \param exec threads and progress callback
 /// \throws Invalid_input if `options.clusters` is below 2,
 ///         `options.min_segments` is 0, `options.min_boundary_contrast`
-///         is not finite and positive, or
-///         `options.k_way.merge_separation_scale` is negative or not a number
+///         is not finite and positive,
+///         `options.k_way.merge_separation_scale` is negative or not a
+///         number, or `options.neck_scale` is negative or not finite
 /// \throws Error if the affinity matrix has no positive eigenvalue after the first
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename AffinityKernel = Kernels::Exponential_kernel>
@@ -168,6 +189,8 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     throw Invalid_input("hybrid segmentation: the boundary contrast limit must be finite and positive");
   if(!(options.k_way.merge_separation_scale >= 0.))
     throw Invalid_input("hybrid segmentation: the merge separation scale must be a number of at least 0");
+  if(!(options.neck_scale >= 0.) || !std::isfinite(options.neck_scale))
+    throw Invalid_input("hybrid segmentation: the neck scale must be a finite number of at least 0");
   const std::size_t n = graph.graph().number_of_faces();
   K_way_result r;
   internal::Stage_timer lap(r.timings);
@@ -201,7 +224,8 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     separation.exponent = internal::separation_exponent(Refinement::sharp_crease_share(graph.graph()));
   }
   const std::size_t m = internal::merge_by_contrast(graph.graph(), graph.weights(), r.labels, options.min_segments,
-                                                    limit, options.k_way.merge_min_area_fraction, separation);
+                                                    limit, options.k_way.merge_min_area_fraction, separation,
+                                                    options.neck_scale);
   lap("merge");
   // with more segments than clusters (a mesh of many connected components)
   // a graph cut on that many labels would crawl: it is skipped there

@@ -49,6 +49,7 @@ struct Segment_options
   double merge_size_exponent = SpectralSeg::K_way_options().merge_size_exponent;
   double merge_separation = SpectralSeg::K_way_options().merge_separation_scale;
   double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
+  double neck_scale = SpectralSeg::Hybrid_options().neck_scale;
   std::string labels, out_mesh, png, json;
   bool binary = false;   // PLY outputs in binary
   std::string parts_dir; // one PLY file per segment
@@ -67,6 +68,12 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
   cmd->add_option("--min-boundary-contrast", o.min_boundary_contrast,
                   "--k auto, contrast-merge and concave-merge: segments are merged while their boundary's contrast "
                   "to the whole mesh is below this (default 4 for contrast-merge, 3 for concave-merge)")
+    ->check(Finite_range(0., 1e6));
+  cmd->add_option("--neck-scale", o.neck_scale,
+                  "--k auto, contrast-merge: a boundary's metric contrast is multiplied by its neck ratio (the "
+                  "square root of the smaller segment's area over the boundary's length) over this, so that limbs "
+                  "stay and slices of a body merge (0: off)")
+    ->capture_default_str()
     ->check(Finite_range(0., 1e6));
   add_metric_options(*cmd, o.metric);
   cmd->add_option("--kernel", o.kernel, "affinity kernel")
@@ -157,7 +164,9 @@ inline std::vector<std::string> segment_option_warnings(const Segment_options& o
   const bool automatic = o.k == "auto";
   const bool salient = automatic && o.salient.method == "salient-cuts";
   if(!automatic)
-    ignored({"--max-k", "--min-boundary-contrast", "--auto-method"}, "it applies to --k auto");
+    ignored({"--max-k", "--min-boundary-contrast", "--auto-method", "--neck-scale"}, "it applies to --k auto");
+  else if(o.salient.method != "contrast-merge")
+    ignored({"--neck-scale"}, "it applies to --auto-method contrast-merge");
   if(!salient)
     ignored({"--eta", "--structure-only", "--min-part-area", "--max-parts", "--parts", "--depth"},
             "it applies to --k auto --auto-method salient-cuts");
@@ -351,6 +360,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
       hybrid.clusters = automatic.max_k;
       if(o.min_boundary_contrast > 0.)
         hybrid.min_boundary_contrast = o.min_boundary_contrast;
+      hybrid.neck_scale = o.neck_scale;
       return SpectralSeg::segment_hybrid(weighted, hybrid, exec);
     }
     return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, automatic, exec)
