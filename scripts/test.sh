@@ -2,11 +2,16 @@
 # One command for a new machine: installs the dependencies, builds everything
 # and runs the whole test suite (unit tests, mesh-type agreement, command-line
 # checks, example and benchmark smoke runs) against Debian 12's CGAL 5.5,
-# then the header, command-line and install tests against CGAL 6.
+# then the header self-containment, command-line and install tests against
+# CGAL 6.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh
-(cd build && ctest --output-on-failure)
+# every test but the header self-containment test, which runs against CGAL 6
+# below (its stricter configuration; about 5 minutes per CGAL version, and CI
+# has 30 minutes): `cd build && ctest -R header_self_containment` runs it
+# against CGAL 5.5
+(cd build && ctest --output-on-failure -E '^header_self_containment$')
 # the same headers against CGAL 6 (a subset of the tests: see the script)
 bash scripts/test_cgal6.sh

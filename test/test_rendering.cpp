@@ -326,6 +326,71 @@ TEST_CASE("render_face_colors composes the default views side by side", "[render
   }
 }
 
+// The share of non-white pixels of a picture.
+double coverage(const Image& img)
+{
+  std::size_t drawn = 0;
+  for(int y = 0; y < img.height; ++y)
+    for(int x = 0; x < img.width; ++x)
+      drawn += is_white(img.pixel(x, y)) ? 0 : 1;
+  return double(drawn) / double(img.width) * 1. / double(img.height);
+}
+
+// A closed box [0,sx] x [0,sy] x [0,sz] of 12 triangles, outward oriented.
+void add_box(Points& points, Triangles& triangles, double sx, double sy, double sz, double x0 = 0.)
+{
+  const std::size_t o = points.size();
+  for(int i = 0; i < 8; ++i)
+    points.push_back({x0 + (i & 1 ? sx : 0.), i & 2 ? sy : 0., i & 4 ? sz : 0.});
+  const std::array<std::array<std::size_t, 3>, 12> box{{{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                                        {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}}};
+  for(const auto& t : box)
+    triangles.push_back({o + t[0], o + t[1], o + t[2]});
+}
+
+TEST_CASE("the default views come from the shape: a flat table is seen from above, not edge-on", "[rendering][views]")
+{
+  // a table top 4 x 0.1 x 2 lying flat (thin along y)
+  Points points;
+  Triangles triangles;
+  add_box(points, triangles, 4., 0.1, 2.);
+  const std::vector<View> views = shape_views(points, triangles);
+  REQUIRE(views.size() == 3);
+  CHECK(views[0].name == "front");
+  CHECK(views[1].name == "oblique");
+  CHECK(views[2].name == "back");
+  // front and back look along the thin axis, y, from either side
+  CHECK(std::abs(std::abs(views[0].direction[1]) - 1.) < 1e-6);
+  CHECK(views[0].direction[1] == -views[2].direction[1]);
+  std::vector<Rgb> colors(triangles.size(), red);
+  Render_options options;
+  options.view_width = options.view_height = 60;
+  const double shape = coverage(render_face_colors(points, triangles, colors, options));
+  options.views = default_views();
+  const double world = coverage(render_face_colors(points, triangles, colors, options));
+  INFO("coverage with the shape's views " << shape << ", with the world's " << world);
+  CHECK(shape >= 0.12);
+  CHECK(world < 0.12); // edge-on from the front and the back
+  // an upright body, thin from front to back (z), keeps the world's front view
+  Points upright;
+  Triangles upright_triangles;
+  add_box(upright, upright_triangles, 1., 4., 0.5);
+  const std::vector<View> u = shape_views(upright, upright_triangles);
+  const View front = default_views()[0];
+  for(int i = 0; i < 3; ++i)
+  {
+    CHECK(std::abs(u[0].direction[i] - front.direction[i]) < 1e-6);
+    CHECK(std::abs(u[0].up[i] - front.up[i]) < 1e-6);
+  }
+  // the same shape with its faces in another order: the same views
+  Triangles reversed(upright_triangles.rbegin(), upright_triangles.rend());
+  const View again = shape_views(upright, reversed)[1];
+  for(int i = 0; i < 3; ++i)
+    CHECK(std::abs(again.direction[i] - u[1].direction[i]) < 1e-9);
+  // nothing with an area: the world's views
+  CHECK(shape_views({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 2}})[1].name == "side");
+}
+
 TEST_CASE("mismatched sizes and bad indices throw", "[rendering][errors]")
 {
   const Points points{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
@@ -345,9 +410,6 @@ TEST_CASE("mismatched sizes and bad indices throw", "[rendering][errors]")
                                                      {0.0, 0.0, 0.0}, y_up),
                   SpectralSeg::Invalid_input);
   CHECK_THROWS_AS(Software_rasterizer(0, 16), SpectralSeg::Invalid_input);
-  Render_options no_views;
-  no_views.views.clear();
-  CHECK_THROWS_AS(render_face_colors(points, triangles, {red}, no_views), SpectralSeg::Invalid_input);
   CHECK_FALSE(std::filesystem::exists(path));
 }
 

@@ -74,8 +74,9 @@ inline void add_render_command(CLI::App& app, Render_command_options& o)
   add_mesh_output_options(*cmd, o.out_mesh, o.binary, o.parts_dir);
   cmd->add_option("--view", o.views,
                   "a view of the picture, repeatable: viewing direction (from the camera into the scene) and up "
-                  "vector as dx,dy,dz,ux,uy,uz (default: 0,0,-1,0,1,0 and -1,0,0,0,1,0 and 0,0,1,0,1,0: "
-                  "front, side, back)");
+                  "vector as dx,dy,dz,ux,uy,uz (default: three views chosen from the shape: along its thinnest "
+                  "principal axis from both sides and from above at an angle, so that flat and long shapes show "
+                  "their parts; 0,0,-1,0,1,0 -1,0,0,0,1,0 0,0,1,0,1,0: the world's front, side and back)");
 }
 
 inline int run_render(const Render_command_options& o, const Progress_printer& out)

@@ -12,7 +12,11 @@
 #include <SpectralSeg/Rendering/Software_rasterizer.h>
 #include <SpectralSeg/Rendering/write_png.h>
 
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -39,13 +43,93 @@ inline std::vector<View> default_views()
           View{"back", {0.0, 0.0, 1.0}, {0.0, 1.0, 0.0}}};
 }
 
+/// \brief Returns three views chosen from the shape of the mesh: along its
+/// thinnest principal axis from either side ("front" and "back", where the
+/// mesh shows its largest outline) and from above at an angle between them
+/// ("oblique").
+///
+/// The principal axes are those of the surface (its exact second moments),
+/// so they do not depend on the tessellation. An upright body, thin from front
+/// to back, is seen as by `default_views()`; a table or a hand lying flat is
+/// seen from above and below instead of edge-on. The up vector is the world
+/// direction +Y (else +Z, then +X) most perpendicular to the viewing
+/// direction, projected onto the picture; axis signs follow the world axes,
+/// so the views are deterministic. A mesh without area gets
+/// `default_views()`.
+/// \param points the vertex positions
+/// \param triangles the faces, as indices into `points`
+inline std::vector<View> shape_views(const std::vector<std::array<double, 3>>& points,
+                                     const std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  typedef Eigen::Vector3d V;
+  double area = 0.;
+  V mean = V::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for(const auto& t : triangles)
+  {
+    if(t[0] >= points.size() || t[1] >= points.size() || t[2] >= points.size())
+      continue; // reported by the renderer
+    const V a(points[t[0]].data()), b(points[t[1]].data()), c(points[t[2]].data());
+    const double w = 0.5 * (b - a).cross(c - a).norm();
+    if(!std::isfinite(w) || !(w > 0.))
+      continue;
+    // the exact first and second moments of the triangle's surface
+    const V sum = a + b + c;
+    area += w;
+    mean += w / 3. * sum;
+    second += w / 12. * (a * a.transpose() + b * b.transpose() + c * c.transpose() + sum * sum.transpose());
+  }
+  if(!(area > 0.))
+    return default_views();
+  mean /= area;
+  const Eigen::Matrix3d covariance = second / area - mean * mean.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  if(solver.info() != Eigen::Success)
+    return default_views();
+  // ascending eigenvalues: column 0 is the thinnest axis
+  V thin = solver.eigenvectors().col(0).normalized();
+  // the sign: towards the world's +Z (the camera side of default_views()'s
+  // front), else +X, else +Y
+  for(int axis : {2, 0, 1})
+    if(std::abs(thin[axis]) > 1e-3)
+    {
+      if(thin[axis] < 0.)
+        thin = -thin;
+      break;
+    }
+  // up: the world axis (+Y, +Z, +X in that order of preference) least
+  // aligned with the viewing direction, made perpendicular to it
+  V up = V::Zero();
+  for(int axis : {1, 2, 0})
+  {
+    V w = V::Zero();
+    w[axis] = 1.;
+    const V u = w - w.dot(thin) * thin;
+    if(u.norm() > 0.5)
+    {
+      up = u.normalized();
+      break;
+    }
+  }
+  if(up.isZero())
+    up = (V::UnitY() - V::UnitY().dot(thin) * thin).normalized();
+  const V right = (-thin).cross(up); // the picture's right in the front view
+  const V oblique = (-thin - up - right).normalized(); // from above, in front, on the right
+  const V oblique_up = (up - up.dot(oblique) * oblique).normalized();
+  const auto a = [](const V& v) { return std::array<double, 3>{{v.x(), v.y(), v.z()}}; };
+  return {View{"front", a(-thin), a(up)}, View{"oblique", a(oblique), a(oblique_up)},
+          View{"back", a(thin), a(up)}};
+}
+
 /// \brief Options of the convenience renderers.
 struct Render_options
 {
-  int view_width = 480;                      ///< width of each view in pixels
-  int view_height = 480;                     ///< height of each view in pixels
-  bool supersample = true;                   ///< 2x2 supersampling anti-aliasing
-  std::vector<View> views = default_views(); ///< views, composed left to right
+  int view_width = 480;    ///< width of each view in pixels
+  int view_height = 480;   ///< height of each view in pixels
+  bool supersample = true; ///< 2x2 supersampling anti-aliasing
+  /// views, composed left to right; empty (the default): `shape_views()`
+  /// of the mesh drawn, `default_views()` for the world axes
+  std::vector<View> views;
 };
 
 /// \brief Renders a mesh with one colour per face from every view of
@@ -55,28 +139,27 @@ struct Render_options
 /// \param colors one colour per face
 /// \param options image size, anti-aliasing and views
 /// \return an image of `views.size() * view_width` x `view_height` pixels
+///         (3 views when `views` is empty)
 /// \throws SpectralSeg::Invalid_input if `colors` does not have one entry per
-///         face, an index is out of range, `views` is empty, a view
-///         direction is zero, or the view size is out of range (see
-///         `Software_rasterizer`)
+///         face, an index is out of range, a view direction is zero, or the
+///         view size is out of range (see `Software_rasterizer`)
 inline Image render_face_colors(const std::vector<std::array<double, 3>>& points,
                                 const std::vector<std::array<std::size_t, 3>>& triangles,
                                 const std::vector<Rgb>& colors,
                                 const Render_options& options = {})
 {
   internal::check_mesh(points.size(), triangles, colors.size(), "face colours");
-  if(options.views.empty())
-    throw Invalid_input("render_face_colors: no view requested");
+  const std::vector<View> views = options.views.empty() ? shape_views(points, triangles) : options.views;
   const Software_rasterizer rasterizer(options.view_width, options.view_height,
                                        options.supersample);
   const int max_views = std::numeric_limits<int>::max() / options.view_width;
-  if(options.views.size() > static_cast<std::size_t>(max_views))
+  if(views.size() > static_cast<std::size_t>(max_views))
     throw Invalid_input("render_face_colors: too many views for one image");
-  Image picture(static_cast<int>(options.views.size()) * options.view_width,
+  Image picture(static_cast<int>(views.size()) * options.view_width,
                 options.view_height);
-  for(std::size_t i = 0; i < options.views.size(); ++i)
+  for(std::size_t i = 0; i < views.size(); ++i)
   {
-    const View& v = options.views[i];
+    const View& v = views[i];
     picture.paste(rasterizer.render(points, triangles, colors, v.direction, v.up),
                   static_cast<int>(i) * options.view_width, 0);
   }
