@@ -238,27 +238,34 @@ run_cli_json(extra_clusters 2 segment ${WORK}/quads.off --k 2 --alternative-extr
 run_cli_json("scores;rand_index_error" 0.0 eval --mesh ${WORK}/quads.off ${WORK}/q.seg ${WORK}/q.seg --json -)
 run_cli(0 "labels: .*q.seg" segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --json -)
 
-# --- a warning for options that are given but not used
-run_cli(0 "warning: --samples is ignored: .*--sampling exact" segment ${WORK}/quads.off --k 2 --sampling exact
+# --- options given but not used by what was asked for are refused (exit
+# code 2), not ignored; an option that the mesh turns out not to need (the
+# Nyström samples where --sampling auto takes the exact embedding) is a warning
+run_cli(2 "error: --samples cannot be used here: .*--sampling exact" segment ${WORK}/quads.off --k 2 --sampling exact
         --samples 5 --labels ${WORK}/q.seg)
 run_cli(0 "warning: --samples was ignored: --sampling auto chose the exact embedding" segment ${WORK}/quads.off
         --k 2 --samples 5 --labels ${WORK}/q.seg)
-run_cli(0 "warning: --max-k is ignored: it applies to --k auto" segment ${WORK}/quads.off --k 2 --max-k 5
+run_cli(2 "error: --max-k cannot be used here: it applies to --k auto" segment ${WORK}/quads.off --k 2 --max-k 5
         --labels ${WORK}/q.seg)
-run_cli(0 "warning: --eta is ignored: it applies to --k auto --auto-method salient-cuts" segment ${WORK}/quads.off
+run_cli(2 "error: --eta cannot be used here: it applies to --k auto --auto-method salient-cuts" segment ${WORK}/quads.off
         --k auto --eta 0.2 --labels ${WORK}/q.seg)
-run_cli(0 "warning: --kernel is ignored: --auto-method salient-cuts" segment ${WORK}/quads.off --k auto
+run_cli(2 "error: --parts cannot be used here: it applies to --k auto --auto-method salient-cuts" segment
+        ${WORK}/quads.off --k auto --parts 4 --labels ${WORK}/q.seg)
+run_cli(2 "error: --kernel cannot be used here: --auto-method salient-cuts" segment ${WORK}/quads.off --k auto
         --auto-method salient-cuts --kernel gaussian --labels ${WORK}/q.seg)
-run_cli(0 "warning: --extra-clusters is ignored" segment ${WORK}/quads.off --k auto --extra-clusters 2
+run_cli(2 "error: --extra-clusters cannot be used here" segment ${WORK}/quads.off --k auto --extra-clusters 2
         --labels ${WORK}/q.seg)
-run_cli(0 "warning: --graph-cut-backend is ignored" segment ${WORK}/quads.off --k 2 --no-graph-cut
+run_cli(2 "error: --graph-cut-backend cannot be used here" segment ${WORK}/quads.off --k 2 --no-graph-cut
         --graph-cut-backend boost-csr --labels ${WORK}/q.seg)
-run_cli(0 "warning: --binary is ignored" segment ${WORK}/quads.off --k 2 --binary --mesh ${WORK}/q.off
+run_cli(2 "error: --binary cannot be used here" segment ${WORK}/quads.off --k 2 --binary --mesh ${WORK}/q.off
         --labels ${WORK}/q.seg)
-run_cli(0 "warning: --weights is ignored: it applies to --metric part-aware" distance ${WORK}/quads.off --from 0
+run_cli(2 "error: --weights cannot be used here: it applies to --metric part-aware" distance ${WORK}/quads.off --from 0
         --metric geodesic --weights 1,1 --field ${WORK}/q.txt)
-run_cli(0 "warning: --view is ignored" render ${WORK}/quads.off ${WORK}/q.seg --mesh ${WORK}/q.ply
+run_cli(2 "error: --view cannot be used here" render ${WORK}/quads.off ${WORK}/q.seg --mesh ${WORK}/q.ply
         --view 0,0,-1,0,1,0)
+run_cli(2 "error: --max-k cannot be used here: it applies to --k auto" batch ${WORK}/quads.off --out ${WORK}/refused
+        --k 2 --max-k 5)
+expect_absent("a batch with an option it cannot use" refused)
 file(WRITE ${WORK}/octahedron.off "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n")
 run_cli_without(0 "warning" segment ${WORK}/octahedron.off --k 2 --sampling nystrom --samples 5 --seed 3
                 --metric angular --labels ${WORK}/o.seg)
@@ -286,7 +293,7 @@ run_cli(2 "--alternative-extra-clusters: 'x' is not a whole number" segment ${WO
 run_cli(2 "--samples: '20000'" segment ${WORK}/quads.off --k 2 --samples 20000 --labels ${WORK}/q.seg)
 run_cli(2 "--min-boundary-contrast: 'nan'" segment ${WORK}/quads.off --k auto --min-boundary-contrast nan --labels ${WORK}/q.seg)
 run_cli(2 "--neck-scale: '-1'" segment ${WORK}/quads.off --k auto --neck-scale -1 --labels ${WORK}/q.seg)
-run_cli(0 "warning: --neck-scale is ignored: it applies to --auto-method contrast-merge" segment ${WORK}/quads.off
+run_cli(2 "error: --neck-scale cannot be used here: it applies to --auto-method contrast-merge" segment ${WORK}/quads.off
         --k auto --auto-method concave-merge --neck-scale 0.5 --labels ${WORK}/q.seg)
 run_cli(2 "--vsi-fraction: 'nan'" distance ${WORK}/quads.off --from 0 --vsi-fraction nan --field ${WORK}/q.txt)
 run_cli(2 "--weights: '1,,1': item ''" distance ${WORK}/quads.off --from 0 --weights 1,,1 --field ${WORK}/q.txt)

@@ -177,7 +177,21 @@ inline void check_outputs(const std::vector<Output_file>& outputs)
 // when the options were not filled from a command line: `cmd` is null).
 inline bool given(const CLI::App* cmd, const std::string& name)
 {
-  return cmd != nullptr && cmd->count(name) > 0;
+  // (a command without that option, e.g. batch and --binary: not given)
+  const CLI::Option* option = cmd != nullptr ? cmd->get_option_no_throw(name) : nullptr;
+  return option != nullptr && option->count() > 0;
+}
+
+// An option that the command asked for does not use is a usage error (exit
+// code 2), never silently ignored: `reasons` holds one line per such option.
+inline void refuse_inapplicable_options(const std::vector<std::string>& reasons)
+{
+  if(reasons.empty())
+    return;
+  std::string message;
+  for(const std::string& r : reasons)
+    message += (message.empty() ? "" : "; ") + r;
+  throw Usage_error(message);
 }
 
 } // namespace spectralseg_cli

@@ -74,14 +74,14 @@ inline void check_mesh_outputs(const std::string& mesh, const std::string& parts
     SpectralSeg::IO::check_writable(SpectralSeg::IO::segment_part_path(dir, 0));
 }
 
-// Warnings for options that will be ignored.
-inline std::vector<std::string> mesh_output_warnings(const CLI::App* cmd, const std::string& mesh,
+// The mesh output options given that no output uses.
+inline std::vector<std::string> inapplicable_mesh_output_options(const CLI::App* cmd, const std::string& mesh,
                                                      const std::string& parts_dir)
 {
   std::vector<std::string> w;
   if(given(cmd, "--binary") && parts_dir.empty() &&
      SpectralSeg::IO::mesh_output_format(mesh) != SpectralSeg::IO::Mesh_output_format::ply)
-    w.push_back("--binary is ignored: it applies to PLY outputs (--mesh .ply, --parts-dir) and there is none");
+    w.push_back("--binary cannot be used here: it applies to PLY outputs (--mesh .ply, --parts-dir) and there is none");
   return w;
 }
 

@@ -94,6 +94,7 @@ inline void add_batch_commands(CLI::App& app, Batch_options& o, Batch_merge_opti
                   "the outputs of a mesh are named by its path relative to this folder (default: the deepest folder "
                   "holding every folder given and the folder of every file)");
   add_segment_method_options(cmd, o.segment);
+  o.segment.cli = cmd; // options the method does not use are refused, as by segment
   cmd->get_option("--threads")
     ->description("threads in all (0 = all), shared by the meshes segmented at once: each gets max(1, threads / "
                   "--jobs); the labels do not depend on it");
@@ -547,6 +548,7 @@ inline int run_batch(const Batch_options& o, const Progress_printer& out)
   if(o.inputs.empty() && o.lists.empty())
     throw Usage_error("batch: no mesh given: give mesh files or folders, or --list FILE");
   (void)parse_k(o.segment.k);
+  refuse_inapplicable_options(inapplicable_segment_options(o.segment));
   const Shard shard = parse_shard(o.shard);
 
   Batch_plan plan;

@@ -48,8 +48,7 @@ inline void add_distance_command(CLI::App& app, Distance_options& o)
 inline int run_distance(const Distance_options& o, Progress_printer& out)
 {
   check_outputs({{"--field", o.field}, {"--png", o.png}});
-  for(const std::string& w : metric_option_warnings(o.cli, o.metric))
-    out.message("warning: " + w);
+  refuse_inapplicable_options(inapplicable_metric_options(o.cli, o.metric));
   const Loaded_mesh m(o.mesh, out);
   const std::size_t source = m.mesh_face_of_input_face(o.from);
   const SpectralSeg::Execution exec(o.threads, out.callback());

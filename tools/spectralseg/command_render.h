@@ -91,11 +91,10 @@ inline int run_render(const Render_command_options& o, const Progress_printer& o
       ro.views.push_back(parse_view(o.views[i], i));
   }
   check_mesh_outputs(o.out_mesh, o.parts_dir, {{"--png", o.png}});
-  std::vector<std::string> warnings = mesh_output_warnings(o.cli, o.out_mesh, o.parts_dir);
+  std::vector<std::string> inapplicable = inapplicable_mesh_output_options(o.cli, o.out_mesh, o.parts_dir);
   if(o.png.empty() && given(o.cli, "--view"))
-    warnings.push_back("--view is ignored: it applies to --png");
-  for(const std::string& w : warnings)
-    out.message("warning: " + w);
+    inapplicable.push_back("--view cannot be used here: it applies to --png");
+  refuse_inapplicable_options(inapplicable);
   const Loaded_mesh m(o.mesh, out);
   const std::vector<int> labels = labels_in_mesh_order(m, o.labels);
   write_mesh_outputs(o.out_mesh, o.binary, o.parts_dir, m, labels,

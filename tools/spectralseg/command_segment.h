@@ -151,15 +151,16 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
                   "which then carries nothing else)");
 }
 
-// Warnings for options given but not used by the method they ask for.
-inline std::vector<std::string> segment_option_warnings(const Segment_options& o)
+// The options given that the method asked for does not use, each with the
+// reason: refused (exit code 2), not ignored.
+inline std::vector<std::string> inapplicable_segment_options(const Segment_options& o)
 {
   const CLI::App* cmd = o.cli;
   std::vector<std::string> w;
   const auto ignored = [&](std::initializer_list<const char*> options, const std::string& why) {
     for(const char* option : options)
       if(given(cmd, option))
-        w.push_back(std::string(option) + " is ignored: " + why);
+        w.push_back(std::string(option) + " cannot be used here: " + why);
   };
   const bool automatic = o.k == "auto";
   const bool salient = automatic && o.salient.method == "salient-cuts";
@@ -184,10 +185,10 @@ inline std::vector<std::string> segment_option_warnings(const Segment_options& o
       ignored({"--samples", "--seed"}, "it sets the Nyström sampling, and --sampling exact takes no samples");
     if(o.no_graph_cut)
       ignored({"--graph-cut-backend", "--graph-cut"}, "--no-graph-cut skips the graph cut");
-    for(const std::string& m : metric_option_warnings(cmd, o.metric))
+    for(const std::string& m : inapplicable_metric_options(cmd, o.metric))
       w.push_back(m);
   }
-  for(const std::string& m : mesh_output_warnings(cmd, o.out_mesh, o.parts_dir))
+  for(const std::string& m : inapplicable_mesh_output_options(cmd, o.out_mesh, o.parts_dir))
     w.push_back(m);
   return w;
 }
@@ -299,8 +300,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
 
   const std::size_t k = parse_k(o.k);
   check_mesh_outputs(o.out_mesh, o.parts_dir, {{"--labels", o.labels}, {"--png", o.png}, {"--json", o.json, true}});
-  for(const std::string& w : segment_option_warnings(o))
-    out.message("warning: " + w);
+  refuse_inapplicable_options(inapplicable_segment_options(o));
 
   const Loaded_mesh m(o.mesh, out);
   lap("read");

@@ -67,17 +67,17 @@ inline void add_metric_options(CLI::App& cmd, Metric_options& o)
     ->capture_default_str();
 }
 
-// Warnings for metric options that the chosen --metric does not use.
-inline std::vector<std::string> metric_option_warnings(const CLI::App* cmd, const Metric_options& o)
+// The metric options given that the chosen --metric does not use.
+inline std::vector<std::string> inapplicable_metric_options(const CLI::App* cmd, const Metric_options& o)
 {
   std::vector<std::string> w;
   const bool part_aware = o.name == "part-aware" || o.name == "blend";
   for(const char* option : {"--weights", "--normalization"})
     if(!part_aware && given(cmd, option))
-      w.push_back(std::string(option) + " is ignored: it applies to --metric part-aware, not " + o.name);
+      w.push_back(std::string(option) + " cannot be used here: it applies to --metric part-aware, not " + o.name);
   for(const char* option : {"--ray-caster", "--vsi-fraction"})
     if((o.name == "geodesic" || o.name == "angular") && given(cmd, option))
-      w.push_back(std::string(option) + " is ignored: --metric " + o.name + " casts no rays");
+      w.push_back(std::string(option) + " cannot be used here: --metric " + o.name + " casts no rays");
   return w;
 }
 
