@@ -1,14 +1,22 @@
 #!/usr/bin/env bash
-# One command for a new user: installs the dependencies, builds, and runs
-# spectralseg on a mesh shipped in data/, then says where the outputs are.
+# One command for a new user: installs the dependencies of the tool, builds
+# it, and runs spectralseg on a mesh shipped in data/, then says where the
+# outputs are.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
-bash scripts/build.sh
+# only the packages and the target the demo runs: the tool (scripts/test.sh
+# builds and tests everything)
+bash scripts/setup.sh --tool
+# (its own build folder: scripts/build.sh and scripts/test.sh configure
+# ./build with every target)
+BUILD_DIR=${BUILD_DIR:-build-demo}
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSPECTRALSEG_BUILD_TESTS=OFF -DSPECTRALSEG_BUILD_EXAMPLES=OFF \
+  -DSPECTRALSEG_BUILD_BENCHMARKS=OFF -DSPECTRALSEG_BUILD_PYTHON=OFF -DSPECTRALSEG_BUILD_DOCS=OFF >/dev/null
+cmake --build "$BUILD_DIR" --target spectralseg -j "$(nproc)"
 OUT=${OUT:-output}
 mkdir -p "$OUT"
 MESH=data/human_man.off
-SEG=./build/tools/spectralseg
+SEG=./$BUILD_DIR/tools/spectralseg
 $SEG info "$MESH"
 # The main job: k-way segmentation with the part-aware metric
 # (head, torso, arms, legs; the ears come out as parts of their own).

@@ -1,8 +1,18 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package SpectralSeg needs to build, test, benchmark and
 # document itself. Idempotent; run as root (or with sudo available).
+#   bash scripts/setup.sh           everything
+#   bash scripts/setup.sh --tool    only what the spectralseg tool needs (the demo)
 set -euo pipefail
 
+TOOL_PACKAGES=(
+  build-essential cmake pkg-config
+  libcgal-dev libgmp-dev libmpfr-dev
+  libeigen3-dev libspectra-dev
+  libboost-graph-dev
+  libtbb-dev libembree-dev
+  libcli11-dev nlohmann-json3-dev libpng-dev
+)
 PACKAGES=(
   build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev
@@ -15,6 +25,10 @@ PACKAGES=(
   python3-open3d   # the test mesh_outputs_open3d reads the PLY/OBJ outputs back (system python3)
   pybind11-dev python3-dev python3-numpy
 )
+
+if [ "${1:-}" = "--tool" ]; then
+  PACKAGES=("${TOOL_PACKAGES[@]}")
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do
