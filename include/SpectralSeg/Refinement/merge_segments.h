@@ -93,20 +93,11 @@ inline double embedding_separation(const Segment_moments& a, const Segment_momen
 // while it is finite and more than `min_segments` are left. `weights` may be
 // empty (then Segment_boundary::weight is 0). Ties go to the pair with the
 // smallest labels. Labels are renumbered 0 .. count-1 by their smallest
-// face; returns the number of segments. `on_merge(a, b, c, boundary)` is
-// told of each merge: segment b (a dense label, in order of first face)
-// joined a at cost c across that boundary.
-struct No_merge_observer
-{
-  template <typename Boundary>
-  void operator()(std::size_t, std::size_t, double, const Boundary&) const {}
-};
-
-template <typename Cost, typename OnMerge = No_merge_observer>
+// face; returns the number of segments.
+template <typename Cost>
 std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                       std::vector<int>& labels, std::size_t min_segments, double min_area_fraction,
-                                      const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr,
-                                      const OnMerge& on_merge = OnMerge())
+                                      const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr)
 {
   const std::size_t n = graph.number_of_faces();
   // dense labels 0 .. s-1 in order of first face
@@ -179,7 +170,6 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
       }
     if(wa == s)
       break; // no two segments touch, or every boundary is too strong
-    on_merge(wa, wb, cheapest, boundary[wa].at(wb));
     // b joins a: b's boundaries become a's
     boundary[wa].erase(wb);
     for(const auto& nb : boundary[wb])

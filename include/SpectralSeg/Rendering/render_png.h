@@ -97,22 +97,13 @@ inline std::vector<View> shape_views(const std::vector<std::array<double, 3>>& p
         thin = -thin;
       break;
     }
-  // up: the world axis (+Y, +Z, +X in that order of preference) least
-  // aligned with the viewing direction, made perpendicular to it
-  V up = V::Zero();
-  for(int axis : {1, 2, 0})
-  {
-    V w = V::Zero();
-    w[axis] = 1.;
-    const V u = w - w.dot(thin) * thin;
-    if(u.norm() > 0.5)
-    {
-      up = u.normalized();
-      break;
-    }
-  }
-  if(up.isZero())
-    up = (V::UnitY() - V::UnitY().dot(thin) * thin).normalized();
+  // up: the first of the world axes +Y, +Z, +X not within 30 degrees of
+  // the viewing direction, made perpendicular to it (at most one axis is
+  // that close to a unit vector, so one of the first two always serves)
+  V up = V::UnitY() - thin.y() * thin;
+  if(up.norm() <= 0.5)
+    up = V::UnitZ() - thin.z() * thin;
+  up.normalize();
   const V right = (-thin).cross(up); // the picture's right in the front view
   const V oblique = (-thin - up - right).normalized(); // from above, in front, on the right
   const V oblique_up = (up - up.dot(oblique) * oblique).normalized();
