@@ -603,14 +603,16 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
   return labels_result(*out.m, out.r.labels, d, report);
 }
 
-py::dict hierarchy_dict(const SpectralSeg::Part_hierarchy& h, std::size_t node)
+// one node and its subtree; `cuts`: the salient-cut method's, else merges
+py::dict hierarchy_dict(const SpectralSeg::Part_hierarchy& h, std::size_t node, bool cuts)
 {
   const SpectralSeg::Part_node& n = h.nodes[node];
   py::dict d;
   d["faces"] = n.faces.size();
   d["area"] = n.area;
   d["depth"] = n.depth;
-  d["tested"] = n.tested;
+  if(cuts)
+    d["tested"] = n.tested;
   if(n.tested)
   {
     d["test"] = SpectralSeg::Segmentability::test_name(n.test);
@@ -625,9 +627,26 @@ py::dict hierarchy_dict(const SpectralSeg::Part_hierarchy& h, std::size_t node)
   if(!n.is_leaf())
   {
     d["cut"] = n.cut_order;
-    d["salience"] = n.cut_salience;
-    d["children"] = py::make_tuple(hierarchy_dict(h, n.children[0]), hierarchy_dict(h, n.children[1]));
+    if(cuts)
+      d["salience"] = n.cut_salience;
+    else
+      d["boundary_strength"] = n.boundary_strength;
+    d["children"] = py::make_tuple(hierarchy_dict(h, n.children[0], cuts), hierarchy_dict(h, n.children[1], cuts));
   }
+  return d;
+}
+
+// the report's "hierarchy", as in the tool's JSON report
+py::dict hierarchy_report(const SpectralSeg::Part_hierarchy& h, bool cuts)
+{
+  py::dict d;
+  d["kind"] = cuts ? "cuts" : "merges";
+  d["chosen_cuts"] = h.chosen_cuts;
+  d["leaves"] = h.number_of_leaves();
+  py::list roots;
+  for(std::size_t root : h.roots)
+    roots.append(hierarchy_dict(h, root, cuts));
+  d["roots"] = roots;
   return d;
 }
 
@@ -655,6 +674,8 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
   const std::size_t keep_parts = parts.is_none() ? 0 : count("parts", py::cast<long long>(parts), 1, 1000000);
   const std::size_t keep_depth = depth.is_none() ? std::numeric_limits<std::size_t>::max()
                                                  : count("depth", py::cast<long long>(depth), 0, 1000000);
+  if(!depth.is_none() && method != "salient-cuts")
+    invalid("depth applies to method='salient_cuts'");
   const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, ray_caster);
   const K_way_settings ks = k_way_settings(kernel, sampling, samples, seed, boundary_enhancement,
                                            static_cast<long long>(SpectralSeg::K_way_options().extra_clusters));
@@ -708,6 +729,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
       automatic.max_k = std::max<std::size_t>(2, std::min(max_clusters, n - 1));
       if(contrast > 0.)
         automatic.min_boundary_contrast = contrast;
+      automatic.parts = keep_parts;
       if(method == "contrast-merge")
       {
         SpectralSeg::Basic_hybrid_options<K> hybrid;
@@ -715,6 +737,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
         hybrid.clusters = automatic.max_k;
         if(contrast > 0.)
           hybrid.min_boundary_contrast = contrast;
+        hybrid.parts = keep_parts;
         return SpectralSeg::segment_hybrid(weighted, hybrid, exec);
       }
       return SpectralSeg::segment_k_way_automatic(weighted, automatic, exec);
@@ -733,10 +756,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
     d["structure_only"] = structure_only;
     d["min_part_area"] = so.min_part_area_fraction;
     d["parts_found"] = out.a.number_of_segments;
-    py::list roots;
-    for(std::size_t root : out.a.hierarchy.roots)
-      roots.append(hierarchy_dict(out.a.hierarchy, root));
-    d["hierarchy"] = roots;
+    d["hierarchy"] = hierarchy_report(out.a.hierarchy, true);
   }
   else
   {
@@ -746,6 +766,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
     d["samples"] = out.r.embedding.samples;
     d["kernel_width"] = out.r.embedding.kernel_width;
     d["graph_cut"] = boundary_enhancement;
+    d["hierarchy"] = hierarchy_report(out.r.hierarchy, false);
   }
   return labels_result(*out.m, out.labels, d, report);
 }
@@ -992,9 +1013,12 @@ structure_only: salient cuts, only the L-projection tests, default False
 min_part_area: salient cuts, no part under this fraction of its component's
     area, default 0.02 (0: the thesis)
 max_parts: salient cuts, no cut once there are this many parts, default 64
-parts: salient cuts, keep only the first cuts, for this many parts
+parts: this many parts, the method's hierarchy cut there instead of where
+    the method stops (salient cuts: the first cuts; merge methods: the last
+    merges undone, or more merges)
 depth: salient cuts, stop every branch of the hierarchy at this depth
-With report=True, salient cuts add the hierarchy of cuts to the report.
+With report=True, the report holds the hierarchy ('hierarchy': 'kind' cuts
+or merges, 'chosen_cuts', 'leaves', 'roots').
 )doc") + segmentation_method_doc)
           .c_str());
 

@@ -163,6 +163,19 @@ endforeach()
 expect_lines(el_sc.seg 5558)
 run_cli(0 "segments: 3\n" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --parts 3 --labels ${WORK}/el_sc3.seg -q)
 run_cli(0 "segments: 2\n" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --depth 1 --labels ${WORK}/el_sc1.seg -q)
+# the merge methods' hierarchy in the JSON, cut at any number of parts
+run_cli(0 "segments: 3\n.*json:" segment ${DATA}/elephant.off --k auto --parts 3 --labels ${WORK}/el_cm3.seg
+        --json ${WORK}/el_cm3.json -q)
+file(READ ${WORK}/el_cm3.json cm_json)
+foreach(key "\"auto_method\": \"contrast-merge\"" "\"kind\": \"merges\"" "\"chosen_cuts\"" "\"boundary_strength\"")
+  string(FIND "${cm_json}" "${key}" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "contrast-merge JSON report lacks ${key}")
+  endif()
+endforeach()
+run_cli(0 "segments: 2\n" segment ${DATA}/elephant.off --k auto --auto-method concave-merge --parts 2 --labels ${WORK}/el_vm2.seg -q)
+run_cli(0 "warning: --parts 500, but the hierarchy has [0-9]+ leaves" segment ${DATA}/elephant.off --k auto --parts 500
+        --labels ${WORK}/el_cm500.seg)
 run_cli(2 "--eta: 'nan'" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --eta nan --labels ${WORK}/q.seg)
 run_cli(2 "--parts: '0' is not a whole number" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --parts 0 --labels ${WORK}/q.seg)
 run_cli(2 "auto-method" segment ${DATA}/elephant.off --k auto --auto-method magic --labels ${WORK}/q.seg)
@@ -249,8 +262,10 @@ run_cli(2 "error: --max-k cannot be used here: it applies to --k auto" segment $
         --labels ${WORK}/q.seg)
 run_cli(2 "error: --eta cannot be used here: it applies to --k auto --auto-method salient-cuts" segment ${WORK}/quads.off
         --k auto --eta 0.2 --labels ${WORK}/q.seg)
-run_cli(2 "error: --parts cannot be used here: it applies to --k auto --auto-method salient-cuts" segment
-        ${WORK}/quads.off --k auto --parts 4 --labels ${WORK}/q.seg)
+run_cli(2 "error: --parts cannot be used here: it applies to --k auto" segment
+        ${WORK}/quads.off --k 2 --parts 4 --labels ${WORK}/q.seg)
+run_cli(2 "error: --depth cannot be used here: it applies to --k auto --auto-method salient-cuts" segment
+        ${WORK}/quads.off --k auto --depth 1 --labels ${WORK}/q.seg)
 run_cli(2 "error: --kernel cannot be used here: --auto-method salient-cuts" segment ${WORK}/quads.off --k auto
         --auto-method salient-cuts --kernel gaussian --labels ${WORK}/q.seg)
 run_cli(2 "error: --extra-clusters cannot be used here" segment ${WORK}/quads.off --k auto --extra-clusters 2

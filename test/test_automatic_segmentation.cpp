@@ -310,6 +310,14 @@ TEST_CASE("automatic_segmentation(): the mesh entry point and its methods", "[au
   for(auto f : s.mesh.faces())
     CHECK(part[f] == expected.labels[f.idx()]);
   CHECK(Evaluation::rand_index_error(expected.labels, s.soup.face_part) < 0.1);
+  // its hierarchy, and the answer cut at 2 parts
+  Part_hierarchy merges;
+  automatic_segmentation(s.mesh, part, P::number_of_threads(1).part_hierarchy(&merges));
+  CHECK(merges.labels() == expected.hierarchy.labels());
+  CHECK(merges.number_of_parts() == n);
+  CHECK(automatic_segmentation(s.mesh, part, P::number_of_parts(2)) == 2);
+  CHECK(automatic_segmentation(s.mesh, part, P::number_of_parts(2).automatic_method(Automatic_method::concave_merge)) == 2);
+  CHECK_THROWS_AS(automatic_segmentation(s.mesh, part, P::number_of_parts(0)), Invalid_input);
   // salient cuts, with the hierarchy
   Part_hierarchy h;
   const std::size_t m = automatic_segmentation(
@@ -318,6 +326,14 @@ TEST_CASE("automatic_segmentation(): the mesh entry point and its methods", "[au
   const std::vector<int> leaves = h.labels();
   for(auto f : s.mesh.faces())
     CHECK(part[f] == leaves[f.idx()]);
+  if(h.number_of_parts() > 2)
+  {
+    CHECK(automatic_segmentation(s.mesh, part,
+                                 P::automatic_method(Automatic_method::salient_cuts).number_of_parts(2)) == 2);
+    const std::vector<int> two = h.labels_with_parts(2);
+    for(auto f : s.mesh.faces())
+      CHECK(part[f] == two[f.idx()]);
+  }
   CHECK_THROWS_AS(automatic_segmentation(s.mesh, part, P::automatic_method(Automatic_method::salient_cuts)
                                                          .segmentability_threshold(-1.)),
                   Invalid_input);

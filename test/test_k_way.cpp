@@ -91,6 +91,14 @@ TEST_CASE("automatic k-way finds the five parts of the star by itself", "[k_way]
   merge_all.min_boundary_contrast = 1e6;
   const K_way_result two = segment_k_way_automatic(s.weighted, merge_all);
   CHECK(two.number_of_segments == 2);
+  // its hierarchy, cut at 3 parts instead of where the rule stops
+  CHECK(r.hierarchy.number_of_parts() >= 5);
+  CHECK(r.hierarchy.roots.size() == 1);
+  K_way_automatic_options three;
+  three.parts = 3;
+  const K_way_result c = segment_k_way_automatic(s.weighted, three);
+  CHECK(c.number_of_segments == 3);
+  CHECK(Evaluation::rand_index_error(c.labels, r.hierarchy.labels_with_parts(3)) < 0.02);
   K_way_automatic_options one;
   one.max_k = 1;
   CHECK_THROWS_AS(segment_k_way_automatic(s.weighted, one), Invalid_input);
@@ -500,6 +508,24 @@ TEST_CASE("hybrid segmentation finds the star's parts, deterministically, and ch
   Hybrid_options off;
   off.k_way.merge_separation_scale = 0.;
   CHECK(segment_hybrid(s.weighted, off).number_of_segments >= 2);
+  // the merge hierarchy: from the clusters down to the one root; the
+  // answer is its first cuts, and any number of parts comes from it
+  const Part_hierarchy& h = r1.hierarchy;
+  REQUIRE(h.roots.size() == 1);
+  CHECK(h.nodes[h.roots[0]].faces.size() == s.graph.number_of_faces());
+  CHECK(h.number_of_parts() == r1.number_of_segments);
+  CHECK(h.number_of_leaves() > h.number_of_parts());
+  CHECK(Evaluation::rand_index_error(h.labels(), r1.labels) < 0.02); // before and after the graph cut
+  for(std::size_t parts : {std::size_t(1), std::size_t(3), r1.number_of_segments + 2})
+  {
+    Hybrid_options cut;
+    cut.parts = parts;
+    const K_way_result c = segment_hybrid(s.weighted, cut, Execution(1));
+    INFO("parts " << parts);
+    CHECK(c.number_of_segments == parts);
+    CHECK(Evaluation::rand_index_error(c.labels, h.labels_with_parts(parts)) < 0.02);
+    CHECK(c.hierarchy.labels() == h.labels()); // the hierarchy is the same
+  }
 }
 
 TEST_CASE("contrast merge: the embedding separation orders the merges, the limit stays on the contrast", "[hybrid][merge]")
@@ -539,9 +565,51 @@ TEST_CASE("contrast merge: the embedding separation orders the merges, the limit
   for(std::size_t d = 0; d < g.number_of_edges(); ++d)
     total += g.edge(Dual_graph::size_type(d)).length;
   labels = thirds;
-  CHECK(internal::merge_by_contrast(g, w, labels, 1, 0.525 * total / 1.05, 0., sep) == 2);
+  CHECK(internal::merge_by_contrast(g, w, labels, 1, std::sqrt(0.525 * total / 1.05), 0., sep) == 2);
   CHECK(labels[0] == labels[8]);
   CHECK(labels[8] != labels[16]);
+  // the history goes on past the limit, in the same order, to one segment,
+  // and its hierarchy gives back the answer and every other count
+  labels = thirds;
+  Refinement::internal::Merge_history history;
+  CHECK(internal::merge_by_contrast(g, w, labels, 1, std::sqrt(0.525 * total / 1.05), 0., sep, 0., &history) == 2);
+  CHECK(labels[0] == labels[8]);
+  CHECK(labels[8] != labels[16]);
+  REQUIRE(history.steps.size() == 2);
+  CHECK(history.answer == 1);
+  CHECK(history.labels == thirds);
+  CHECK(history.steps[0].strength < std::sqrt(0.525 * total / 1.05));
+  CHECK(history.steps[1].strength >= std::sqrt(0.525 * total / 1.05));
+  const Part_hierarchy h = internal::hierarchy_from_merges(history.labels, g.geometry().areas, history.steps, history.answer);
+  CHECK(h.roots == std::vector<std::size_t>{0});
+  CHECK(h.number_of_leaves() == 3);
+  CHECK(h.number_of_cuts() == 2);
+  CHECK(h.chosen_cuts == 1);
+  CHECK(h.number_of_parts() == 2);
+  CHECK(h.labels() == labels);
+  CHECK(h.labels_with_parts(3) == thirds);
+  CHECK(h.labels_with_parts(1) == std::vector<int>(24, 0));
+  CHECK(h.labels_at_depth(1) == labels);
+  for(std::size_t i = 0; i < h.nodes.size(); ++i)
+  {
+    const Part_node& n = h.nodes[i];
+    INFO("node " << i);
+    if(n.parent != Part_node::none)
+    {
+      CHECK(n.parent < i); // parents before children, roots first
+      CHECK(n.depth == h.nodes[n.parent].depth + 1);
+    }
+    if(!n.is_leaf())
+    {
+      std::vector<std::uint32_t> both;
+      std::merge(h.nodes[n.children[0]].faces.begin(), h.nodes[n.children[0]].faces.end(),
+                 h.nodes[n.children[1]].faces.begin(), h.nodes[n.children[1]].faces.end(), std::back_inserter(both));
+      CHECK(both == n.faces);
+      CHECK(n.area == Approx(h.nodes[n.children[0]].area + h.nodes[n.children[1]].area));
+    }
+  }
+  CHECK(h.nodes[0].boundary_strength == history.steps[1].strength); // the last merge is the first cut
+  CHECK(h.nodes[0].cut_order == 0);
 }
 
 TEST_CASE("contrast merge: the neck ratio keeps the compact part and merges the long one, at any scale",

@@ -9,6 +9,7 @@
 #include <SpectralSeg/Embedding/Spectral_embedding.h>
 #include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
+#include <SpectralSeg/Part_hierarchy.h>
 #include <SpectralSeg/Refinement/graph_cut_boundaries.h>
 
 #include <cstddef>
@@ -158,6 +159,12 @@ struct Basic_K_way_automatic_options
   /// merging stops once the weakest boundary's mean concave angle reaches
   /// this many times the mesh's mean concave angle
   double min_boundary_contrast = 3.;
+  /// when positive, the answer has this many parts (or as many as the
+  /// over-segmentation has, if fewer): the merge hierarchy
+  /// (`K_way_result::hierarchy`) cut at that number instead of where
+  /// `min_boundary_contrast` stops the merge, then the graph cut; 0 (the
+  /// default): the rule decides
+  std::size_t parts = 0;
 };
 
 /// \ingroup PkgSpectralSegKWay
@@ -185,6 +192,10 @@ struct K_way_result
   /// its `Refinement::concave_normalized_cut()` when several were tried,
   /// else 0
   double normalized_cut = 0.;
+  /// the merges from the over-segmentation down to one segment per
+  /// connected component, the answer's first (`Part_hierarchy`; empty when
+  /// nothing was merged, as with `extra_clusters` 0)
+  Part_hierarchy hierarchy;
   /// seconds spent in each stage, in order
   std::vector<std::pair<std::string, double>> timings;
 };

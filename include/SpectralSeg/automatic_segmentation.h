@@ -267,6 +267,7 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     }
     ++parts;
   }
+  h.chosen_cuts = cuts;
   r.labels = h.labels();
   r.number_of_segments = h.number_of_parts();
   exec.report(stage, 1.);
@@ -345,8 +346,13 @@ enum class Automatic_method
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.02}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_parts}
+///     \cgalParamDescription{when given, the answer has this many parts (or as many as the hierarchy has leaves, if fewer): the hierarchy cut there (`Part_hierarchy::labels_with_parts()`; the merge methods then smooth the boundaries by their graph cut) instead of where the method stops}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{none: the method decides}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{part_hierarchy}
-///     \cgalParamDescription{receives the hierarchy of cuts (salient-cut method; left untouched by the merge methods)}
+///     \cgalParamDescription{receives the hierarchy behind the answer: the salient-cut method's cuts, or the merge methods' merges from their over-segmentation down to one part per connected component}
 ///     \cgalParamType{`Part_hierarchy*`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
@@ -392,8 +398,10 @@ std::size_t automatic_segmentation(const TriangleMesh& tm, SegmentMap segments,
     o.clusters = choose_parameter(get_parameter(np, SpectralSeg::internal_np::max_number_of_segments), o.clusters);
     o.min_boundary_contrast =
       choose_parameter(get_parameter(np, SpectralSeg::internal_np::min_boundary_contrast), o.min_boundary_contrast);
-    const K_way_result r = segment_hybrid(g.weighted, o, g.exec);
+    o.parts = internal::number_of_parts_from(np);
+    K_way_result r = segment_hybrid(g.weighted, o, g.exec);
     internal::put_labels(tm, r.labels, segments, np);
+    internal::put_hierarchy(std::move(r.hierarchy), np);
     return r.number_of_segments;
   }
   auto o = choose_parameter(get_parameter(np, SpectralSeg::internal_np::automatic_options),
@@ -408,14 +416,17 @@ std::size_t automatic_segmentation(const TriangleMesh& tm, SegmentMap segments,
     throw Invalid_input("automatic segmentation: the segmentability threshold must be finite and non-negative");
   if(!(o.min_part_area_fraction >= 0.) || !(o.min_part_area_fraction < 0.5))
     throw Invalid_input("automatic segmentation: the minimum part area fraction must be in [0, 0.5)");
+  const std::size_t parts = internal::number_of_parts_from(np);
   const Execution exec = internal::execution_from(np);
   const Dual_graph graph = make_dual_graph(tm, np);
   Automatic_segmentation_result r = segment_automatically(graph, sequence_weights(graph, exec), o, exec);
+  if(parts > 0)
+  {
+    r.labels = r.hierarchy.labels_with_parts(parts);
+    r.number_of_segments = std::min(r.hierarchy.number_of_leaves(), std::max(parts, r.hierarchy.roots.size()));
+  }
   internal::put_labels(tm, r.labels, segments, np);
-  Part_hierarchy* out = choose_parameter(get_parameter(np, SpectralSeg::internal_np::part_hierarchy),
-                                         static_cast<Part_hierarchy*>(nullptr));
-  if(out)
-    *out = std::move(r.hierarchy);
+  internal::put_hierarchy(std::move(r.hierarchy), np);
   return r.number_of_segments;
 }
 

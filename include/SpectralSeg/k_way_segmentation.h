@@ -55,6 +55,34 @@ void put_labels(const TriangleMesh& tm, const std::vector<int>& labels, SegmentM
     put(segments, f, static_cast<Label>(labels[get(fim, f)]));
 }
 
+// The `number_of_parts` named parameter (0 when not given).
+// \throws Invalid_input if it is given as 0
+template <typename NamedParameters>
+std::size_t number_of_parts_from(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const std::size_t none = static_cast<std::size_t>(-1);
+  const std::size_t parts = choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_parts), none);
+  if(parts == none)
+    return 0;
+  if(parts == 0)
+    throw Invalid_input("automatic segmentation: the number of parts must be at least 1");
+  return parts;
+}
+
+// Moves `h` to where the `part_hierarchy` named parameter points, if given.
+template <typename NamedParameters>
+void put_hierarchy(Part_hierarchy&& h, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Part_hierarchy* out =
+    choose_parameter(get_parameter(np, SpectralSeg::internal_np::part_hierarchy), static_cast<Part_hierarchy*>(nullptr));
+  if(out)
+    *out = std::move(h);
+}
+
 } // namespace internal
 /// \endcond
 
@@ -179,6 +207,16 @@ std::size_t k_way_segmentation(const TriangleMesh& tm, std::size_t k, SegmentMap
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{3}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_parts}
+///     \cgalParamDescription{when given, the answer has this many parts (or as many as the over-segmentation has, if fewer): the merge hierarchy cut there instead of where the rule stops (`K_way_automatic_options::parts`)}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{none: the rule decides}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{part_hierarchy}
+///     \cgalParamDescription{receives the merges from the over-segmentation down to one part per connected component (`K_way_result::hierarchy`)}
+///     \cgalParamType{`Part_hierarchy*`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_input if `max_number_of_segments` is below 2, for a
@@ -198,8 +236,10 @@ std::size_t k_way_segmentation_automatic(const TriangleMesh& tm, SegmentMap segm
   o.max_k = choose_parameter(get_parameter(np, SpectralSeg::internal_np::max_number_of_segments), o.max_k);
   o.min_boundary_contrast =
     choose_parameter(get_parameter(np, SpectralSeg::internal_np::min_boundary_contrast), o.min_boundary_contrast);
-  const K_way_result r = segment_k_way_automatic(g.weighted, o, g.exec);
+  o.parts = internal::number_of_parts_from(np);
+  K_way_result r = segment_k_way_automatic(g.weighted, o, g.exec);
   internal::put_labels(tm, r.labels, segments, np);
+  internal::put_hierarchy(std::move(r.hierarchy), np);
   return r.number_of_segments;
 }
 

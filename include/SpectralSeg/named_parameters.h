@@ -40,6 +40,7 @@ namespace internal_np {
   P(structure_only_t, structure_only) \
   P(min_part_area_fraction_t, min_part_area_fraction) \
   P(part_hierarchy_t, part_hierarchy) \
+  P(number_of_parts_t, number_of_parts) \
   P(connect_touching_parts_t, connect_touching_parts) \
   P(contact_distance_t, contact_distance) \
   P(speck_area_fraction_t, speck_area_fraction)

@@ -63,6 +63,12 @@ struct Basic_hybrid_options
   /// one (a small ratio: merged). The ratio does not depend on the mesh's
   /// scale or resolution. At least 0
   double neck_scale = 0.4;
+  /// when positive, the answer has this many parts (or as many as the
+  /// over-segmentation has, if fewer): the merge hierarchy
+  /// (`K_way_result::hierarchy`) cut at that number instead of where
+  /// `min_boundary_contrast` stops the merge; 0 (the default): the limit
+  /// decides
+  std::size_t parts = 0;
 };
 
 /// \ingroup PkgSpectralSegAutomatic
@@ -75,19 +81,21 @@ namespace internal {
 
 // Merges adjacent segments, weakest boundary first: segments under
 // `small` area first (smallest first, whatever their boundary), then the
-// pair with the lowest product of the two contrasts while it is below
-// `limit` and more than `min_segments` are left (with a positive
+// pair with the lowest product of the two contrasts while their geometric
+// mean (the boundary's contrast) is below `limit` and more than
+// `min_segments` are left (with a positive
 // `neck_scale` the metric contrast is multiplied by the pair's neck ratio
 // over `neck_scale`); with
 // `separation.coordinates` the pairs are taken in the order of that product
 // times the embedding-separation factor (the limit still applies to the
-// product alone). Labels renumbered by their smallest face; returns the
-// number of segments.
+// contrast alone). Labels renumbered by their smallest face; returns the
+// number of segments; with `history`, every merge down to one segment per
+// component is recorded there (Refinement::internal::merge_cheapest_boundaries()).
 inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
                                      std::vector<int>& labels, std::size_t min_segments, double limit,
                                      double min_area_fraction,
                                      const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
-                                     double neck_scale = 0.)
+                                     double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr)
 {
   // mesh means, weighted by edge length
   double length = 0., concave = 0., metric = 0.;
@@ -106,19 +114,20 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
   // a flat or convex mesh (or a zero metric) gives no contrast: such
   // boundaries are weak
   return Refinement::internal::merge_cheapest_boundaries(
-    graph, weights, labels, min_segments, min_area_fraction, [&](const Refinement::internal::Segment_boundary& x, double smaller, double r) {
+    graph, weights, labels, min_segments, min_area_fraction, limit,
+    [&](const Refinement::internal::Segment_boundary& x, double smaller, double r) {
       const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
       double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
       if(neck_scale > 0.) // the neck ratio: large around a limb, small across a slice of a body
         m *= std::sqrt(smaller * total_area) / x.length / neck_scale;
-      if(!(c * m < limit))
-        return std::numeric_limits<double>::infinity();
       // the order, not the limit, follows the separation (r is infinite
       // without coordinates)
-      return r < separation.scale ? c * m * std::pow(r / separation.scale, separation.exponent) : c * m;
+      const double order = r < separation.scale ? c * m * std::pow(r / separation.scale, separation.exponent) : c * m;
+      return Refinement::internal::Merge_cost{order, std::sqrt(c * m)};
     },
     separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0 ? separation.coordinates
-                                                                                            : nullptr);
+                                                                                            : nullptr,
+    history);
 }
 
 } // namespace internal
@@ -215,7 +224,6 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   lap("k-means");
   r.labels = r.clusters.labels;
   Refinement::make_segments_connected(graph.graph(), r.labels);
-  const double limit = options.min_boundary_contrast * options.min_boundary_contrast;
   Refinement::Embedding_separation separation;
   if(options.k_way.merge_separation_scale > 0.)
   {
@@ -223,25 +231,25 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     separation.scale = options.k_way.merge_separation_scale;
     separation.exponent = internal::separation_exponent(Refinement::sharp_crease_share(graph.graph()));
   }
-  const std::size_t m = internal::merge_by_contrast(graph.graph(), graph.weights(), r.labels, options.min_segments,
-                                                    limit, options.k_way.merge_min_area_fraction, separation,
-                                                    options.neck_scale);
+  Refinement::internal::Merge_history history;
+  std::size_t m = internal::merge_by_contrast(graph.graph(), graph.weights(), r.labels, options.min_segments,
+                                              options.min_boundary_contrast, options.k_way.merge_min_area_fraction,
+                                              separation, options.neck_scale, &history);
+  r.hierarchy =
+    internal::hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+  if(options.parts > 0)
+  {
+    r.labels = r.hierarchy.labels_with_parts(options.parts);
+    m = r.labels.empty() ? 0 : std::size_t(*std::max_element(r.labels.begin(), r.labels.end()) + 1);
+  }
   lap("merge");
   // with more segments than clusters (a mesh of many connected components)
   // a graph cut on that many labels would crawl: it is skipped there
   if(options.k_way.boundary_enhancement && m > 1 && m <= clusters)
   {
-    Eigen::MatrixXd proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), r.embedding.coordinates.cols());
-    std::vector<double> count(m, 0.);
-    for(std::size_t f = 0; f < n; ++f) // in face order: thread-independent
-    {
-      proxies.row(r.labels[f]) += r.embedding.coordinates.row(static_cast<Eigen::Index>(f));
-      count[std::size_t(r.labels[f])] += 1.;
-    }
-    for(std::size_t c = 0; c < m; ++c)
-      proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
     exec.report("graph cut", 0.);
-    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates, proxies, r.labels,
+    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates,
+                                     internal::mean_proxies(r.embedding.coordinates, r.labels, m), r.labels,
                                      options.k_way.graph_cut);
     exec.report("graph cut", 1.);
     lap("graph cut");

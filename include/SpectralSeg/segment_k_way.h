@@ -74,8 +74,45 @@ inline double separation_exponent(double share)
   return std::max(0., std::min(1., (0.6 - share) / 0.3));
 }
 
+// The mean embedding coordinates of each of the `m` segments of `labels`
+// (one row per segment), the proxies of the graph cut after a merge.
+inline Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const std::vector<int>& labels, std::size_t m)
+{
+  Eigen::MatrixXd proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), coordinates.cols());
+  std::vector<double> count(m, 0.);
+  for(std::size_t f = 0; f < labels.size(); ++f) // in face order: thread-independent
+  {
+    proxies.row(labels[f]) += coordinates.row(static_cast<Eigen::Index>(f));
+    count[std::size_t(labels[f])] += 1.;
+  }
+  for(std::size_t c = 0; c < m; ++c)
+    proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
+  return proxies;
+}
+
+// The answer of a merge method cut at `parts` parts in its hierarchy
+// instead: the labels of the hierarchy's first cuts, boundaries smoothed by
+// the graph cut (when `graph_cut` and at most `clusters` segments) and
+// segments made connected; `r.hierarchy` and `r.embedding` must be set.
+template <typename AffinityKernel>
+void cut_hierarchy(const Weighted_dual_graph& graph, std::size_t parts, std::size_t clusters,
+                   const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, const Execution& exec)
+{
+  r.labels = r.hierarchy.labels_with_parts(parts);
+  const std::size_t m = r.labels.empty() ? 0 : std::size_t(*std::max_element(r.labels.begin(), r.labels.end()) + 1);
+  if(options.boundary_enhancement && m > 1 && m <= clusters)
+  {
+    exec.report("graph cut", 0.);
+    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates,
+                                     mean_proxies(r.embedding.coordinates, r.labels, m), r.labels, options.graph_cut);
+    exec.report("graph cut", 1.);
+  }
+  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+}
+
 // Merge (when over-segmented), graph cut and connected segments on the k
-// K-means clusters of kmeans_clusters(): k_final segments.
+// K-means clusters of kmeans_clusters(): k_final segments; the merges in
+// r.hierarchy.
 template <typename AffinityKernel>
 void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
@@ -100,9 +137,14 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
         separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
       }
     }
-    return Refinement::merge_weakest_boundaries(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
-                                                options.merge_min_area_fraction, options.merge_size_exponent,
-                                                separation);
+    Refinement::internal::Merge_history history;
+    const std::size_t m =
+      Refinement::internal::merge_weakest(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
+                                          options.merge_min_area_fraction, options.merge_size_exponent, separation,
+                                          &history);
+    r.hierarchy =
+      hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+    return m;
   };
   Eigen::MatrixXd proxies = r.clusters.centroids;
   bool merged = false;
@@ -119,15 +161,7 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
     const std::size_t m = merge(labels);
     if(m <= k)
     {
-      proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), coordinates.cols());
-      std::vector<double> count(m, 0.);
-      for(std::size_t f = 0; f < labels.size(); ++f) // in face order: thread-independent
-      {
-        proxies.row(labels[f]) += coordinates.row(static_cast<Eigen::Index>(f));
-        count[std::size_t(labels[f])] += 1.;
-      }
-      for(std::size_t c = 0; c < m; ++c)
-        proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
+      proxies = mean_proxies(coordinates, labels, m);
       r.labels = std::move(labels);
       merged = true;
     }
@@ -390,7 +424,10 @@ K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph,
     length += l;
   }
   o.merge_strength_limit = options.min_boundary_contrast * (length > 0. ? sum / length : 0.);
-  return segment_k_way(graph, 2, o, exec);
+  K_way_result r = segment_k_way(graph, 2, o, exec);
+  if(options.parts > 0 && !r.hierarchy.nodes.empty())
+    internal::cut_hierarchy(graph, options.parts, std::min(options.max_k, n - 1), o, r, exec);
+  return r;
 }
 
 /// \cond SKIP_IN_MANUAL

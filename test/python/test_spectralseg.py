@@ -139,7 +139,8 @@ class Automatic(unittest.TestCase):
         v, f = Mesh.get()
         labels, report = spectralseg.automatic_segmentation(v, f, method="salient_cuts", report=True)
         self.assertEqual(report["parts_found"], len(set(labels.tolist())))
-        root = report["hierarchy"][0]
+        self.assertEqual(report["hierarchy"]["kind"], "cuts")
+        root = report["hierarchy"]["roots"][0]
         self.assertEqual(root["faces"], len(f))
         self.assertIn("children", root)
         three = spectralseg.automatic_segmentation(v, f, method="salient_cuts", parts=3)
@@ -148,6 +149,21 @@ class Automatic(unittest.TestCase):
         self.assertEqual(set(one.tolist()), {0})
         strict = spectralseg.automatic_segmentation(v, f, method="salient_cuts", eta=0.9)
         self.assertLessEqual(len(set(strict.tolist())), len(set(labels.tolist())))
+
+    def test_merge_hierarchy_and_parts(self):
+        v, f = Mesh.get()
+        for method in ("contrast_merge", "concave_merge"):
+            labels, report = spectralseg.automatic_segmentation(v, f, method=method, report=True)
+            h = report["hierarchy"]
+            self.assertEqual(h["kind"], "merges")
+            self.assertEqual(len(h["roots"]), 1)
+            self.assertEqual(h["roots"][0]["faces"], len(f))
+            self.assertGreaterEqual(h["leaves"], len(set(labels.tolist())))
+            for parts in (1, 3):
+                cut = spectralseg.automatic_segmentation(v, f, method=method, parts=parts)
+                self.assertEqual(len(set(cut.tolist())), parts, method)
+            with self.assertRaises(ValueError):
+                spectralseg.automatic_segmentation(v, f, method=method, depth=1)
 
 
 class Distances(unittest.TestCase):

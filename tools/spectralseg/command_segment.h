@@ -165,11 +165,11 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
   const bool automatic = o.k == "auto";
   const bool salient = automatic && o.salient.method == "salient-cuts";
   if(!automatic)
-    ignored({"--max-k", "--min-boundary-contrast", "--auto-method", "--neck-scale"}, "it applies to --k auto");
+    ignored({"--max-k", "--min-boundary-contrast", "--auto-method", "--neck-scale", "--parts"}, "it applies to --k auto");
   else if(o.salient.method != "contrast-merge")
     ignored({"--neck-scale"}, "it applies to --auto-method contrast-merge");
   if(!salient)
-    ignored({"--eta", "--structure-only", "--min-part-area", "--max-parts", "--parts", "--depth"},
+    ignored({"--eta", "--structure-only", "--min-part-area", "--max-parts", "--depth"},
             "it applies to --k auto --auto-method salient-cuts");
   if(salient)
     ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--kernel", "--sampling",
@@ -311,7 +311,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   const SpectralSeg::Execution exec(o.threads, out.callback());
   if(k == 0 && o.salient.method == "salient-cuts")
   {
-    std::vector<int> labels = run_salient_cuts(o.salient, m.graph, exec, report, timings);
+    std::vector<int> labels = run_salient_cuts(o.salient, m.graph, exec, report, timings, out);
     t0 = clock::now();
     return write_segment_outputs(o, m, labels, exec, "", report, timings, lap, started, out);
   }
@@ -353,6 +353,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     automatic.max_k = std::max<std::size_t>(2, std::min(o.max_k, n - 1));
     if(o.min_boundary_contrast > 0.)
       automatic.min_boundary_contrast = o.min_boundary_contrast;
+    automatic.parts = o.salient.parts;
     if(k == 0 && o.salient.method == "contrast-merge")
     {
       SpectralSeg::Basic_hybrid_options<std::decay_t<decltype(kernel)>> hybrid;
@@ -361,6 +362,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
       if(o.min_boundary_contrast > 0.)
         hybrid.min_boundary_contrast = o.min_boundary_contrast;
       hybrid.neck_scale = o.neck_scale;
+      hybrid.parts = o.salient.parts;
       return SpectralSeg::segment_hybrid(weighted, hybrid, exec);
     }
     return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, automatic, exec)
@@ -381,6 +383,12 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
                            : ""));
   }
 
+  if(k == 0)
+  {
+    report["auto_method"] = o.salient.method;
+    report["hierarchy"] = hierarchy_report(r.hierarchy, false);
+  }
+  warn_missing_parts(o.salient.parts, r.hierarchy, out);
   report["kernel"] = o.kernel;
   report["embedding"] = r.embedding.exact ? "exact" : "nystrom";
   report["samples"] = r.embedding.samples;

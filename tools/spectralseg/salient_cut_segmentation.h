@@ -7,6 +7,7 @@
 #define SPECTRALSEG_TOOLS_SALIENT_CUT_SEGMENTATION_H
 
 #include "Argument_checks.h"
+#include "Progress_printer.h"
 
 #include <SpectralSeg/automatic_segmentation.h>
 #include <SpectralSeg/segment_hybrid.h>
@@ -53,20 +54,25 @@ inline void add_salient_cut_options(CLI::App& cmd, Salient_cut_options& o)
     ->capture_default_str()
     ->check(Count(0, 1000000));
   cmd.add_option("--parts", o.parts,
-                 "salient-cuts: keep only the first cuts, for this many parts (the hierarchy is still reported whole)")
+                 "--k auto: this many parts, the method's hierarchy cut there instead of where the method stops "
+                 "(salient-cuts: its first cuts; the merge methods: their last merges undone, or more merges); "
+                 "the JSON report still holds the whole hierarchy")
     ->check(Count(1, 1000000));
   cmd.add_option("--depth", o.depth, "salient-cuts: stop every branch of the hierarchy at this depth (0: one part)")
     ->check(Count(0, 1000000));
 }
 
-inline nlohmann::ordered_json hierarchy_json(const SpectralSeg::Part_hierarchy& h, std::size_t node)
+// One node of a hierarchy and its subtree; `cuts`: the salient-cut method's
+// (with the segmentability tests), else merges.
+inline nlohmann::ordered_json hierarchy_json(const SpectralSeg::Part_hierarchy& h, std::size_t node, bool cuts)
 {
   const SpectralSeg::Part_node& n = h.nodes[node];
   nlohmann::ordered_json j;
   j["faces"] = n.faces.size();
   j["area"] = n.area;
   j["depth"] = n.depth;
-  j["tested"] = n.tested;
+  if(cuts)
+    j["tested"] = n.tested;
   if(n.tested)
   {
     j["test"] = SpectralSeg::Segmentability::test_name(n.test);
@@ -81,17 +87,44 @@ inline nlohmann::ordered_json hierarchy_json(const SpectralSeg::Part_hierarchy& 
   if(!n.is_leaf())
   {
     j["cut"] = n.cut_order;
-    j["salience"] = n.cut_salience;
-    j["children"] = {hierarchy_json(h, n.children[0]), hierarchy_json(h, n.children[1])};
+    if(cuts)
+      j["salience"] = n.cut_salience;
+    else
+      j["boundary_strength"] = n.boundary_strength;
+    j["children"] = {hierarchy_json(h, n.children[0], cuts), hierarchy_json(h, n.children[1], cuts)};
   }
   return j;
+}
+
+// The "hierarchy" entry of the JSON report: the number of cuts of the
+// method's answer, the number of leaves, and the trees from their roots.
+inline nlohmann::ordered_json hierarchy_report(const SpectralSeg::Part_hierarchy& h, bool cuts)
+{
+  nlohmann::ordered_json j;
+  j["kind"] = cuts ? "cuts" : "merges";
+  j["chosen_cuts"] = h.chosen_cuts;
+  j["leaves"] = h.number_of_leaves();
+  nlohmann::ordered_json roots = nlohmann::json::array();
+  for(std::size_t root : h.roots)
+    roots.push_back(hierarchy_json(h, root, cuts));
+  j["roots"] = roots;
+  return j;
+}
+
+// A warning when --parts asks for more parts than the hierarchy has leaves.
+inline void warn_missing_parts(std::size_t parts, const SpectralSeg::Part_hierarchy& h, const Progress_printer& out)
+{
+  if(parts > 0 && !h.nodes.empty() && parts > h.number_of_leaves())
+    out.message("warning: --parts " + std::to_string(parts) + ", but the hierarchy has " +
+                std::to_string(h.number_of_leaves()) + " leaves: " + std::to_string(h.number_of_leaves()) + " parts");
 }
 
 // Runs the salient-cut method on a loaded mesh; fills labels, adds its
 // report entries and stage timings.
 inline std::vector<int> run_salient_cuts(const Salient_cut_options& o, const SpectralSeg::Dual_graph& graph,
                                          const SpectralSeg::Execution& exec, nlohmann::ordered_json& report,
-                                         std::vector<std::pair<std::string, double>>& timings)
+                                         std::vector<std::pair<std::string, double>>& timings,
+                                         const Progress_printer& out)
 {
   SpectralSeg::Automatic_segmentation_options<> options;
   options.segmentability.threshold = o.eta;
@@ -105,6 +138,7 @@ inline std::vector<int> run_salient_cuts(const Salient_cut_options& o, const Spe
   std::vector<int> labels = r.labels;
   if(o.parts > 0)
     labels = r.hierarchy.labels_with_parts(o.parts);
+  warn_missing_parts(o.parts, r.hierarchy, out);
   if(o.depth != std::numeric_limits<std::size_t>::max())
   {
     const std::vector<int> at_depth = r.hierarchy.labels_at_depth(o.depth);
@@ -117,10 +151,7 @@ inline std::vector<int> run_salient_cuts(const Salient_cut_options& o, const Spe
   report["structure_only"] = o.structure_only;
   report["min_part_area"] = o.min_part_area;
   report["parts_found"] = r.number_of_segments;
-  nlohmann::ordered_json roots = nlohmann::json::array();
-  for(std::size_t root : r.hierarchy.roots)
-    roots.push_back(hierarchy_json(r.hierarchy, root));
-  report["hierarchy"] = roots;
+  report["hierarchy"] = hierarchy_report(r.hierarchy, true);
   return labels;
 }
 

@@ -84,20 +84,51 @@ inline double embedding_separation(const Segment_moments& a, const Segment_momen
   return gap > 0. ? (spread > 0. ? gap / spread : std::numeric_limits<double>::infinity()) : 0.;
 }
 
+// What a merge order says of one pair of adjacent segments: `order`
+// ranks the pairs (the lowest is merged first) and `strength` is what the
+// limit applies to.
+struct Merge_cost
+{
+  double order = 0., strength = 0.;
+};
+
+// One merge: segment `absorbed` joined `kept` (both labels of the segments
+// before the first merge, dense from 0 in order of first face), across a
+// boundary of `strength`.
+struct Merge_step
+{
+  std::size_t kept = 0, absorbed = 0;
+  double strength = 0.;
+};
+
+// Every merge of merge_cheapest_boundaries(), those of its answer first
+// (`answer` of them), then those that go on to one segment per connected
+// set of touching segments; `labels` are the segments before the first.
+struct Merge_history
+{
+  std::vector<int> labels;
+  std::vector<Merge_step> steps;
+  std::size_t answer = 0;
+};
+
 // Merges adjacent segments, cheapest boundary first: segments under
 // `min_area_fraction` of the area first (smallest first, whatever their
 // boundary), then the pair with the lowest `cost(boundary, smaller,
-// separation)`, where `smaller` is the area of the pair's smaller segment
-// over the mesh's area and `separation` the pair's embedding_separation()
-// in `coordinates` (one row per face; infinite when `coordinates` is null),
-// while it is finite and more than `min_segments` are left. `weights` may be
-// empty (then Segment_boundary::weight is 0). Ties go to the pair with the
-// smallest labels. Labels are renumbered 0 .. count-1 by their smallest
-// face; returns the number of segments.
+// separation).order` among those whose `.strength` is below `limit`, where
+// `smaller` is the area of the pair's smaller segment over the mesh's area
+// and `separation` the pair's embedding_separation() in `coordinates` (one
+// row per face; infinite when `coordinates` is null), while more than
+// `min_segments` are left. `weights` may be empty (then
+// Segment_boundary::weight is 0). Ties go to the pair with the smallest
+// labels. Labels are renumbered 0 .. count-1 by their smallest face;
+// returns the number of segments. With `history`, the merges go on past the
+// answer, in the same order without the limit and the count, down to one
+// segment per connected set, and every merge is recorded there.
 template <typename Cost>
 std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                       std::vector<int>& labels, std::size_t min_segments, double min_area_fraction,
-                                      const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr)
+                                      double limit, const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr,
+                                      Merge_history* history = nullptr)
 {
   const std::size_t n = graph.number_of_faces();
   // dense labels 0 .. s-1 in order of first face
@@ -105,6 +136,12 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
   for(int& l : labels)
     l = dense.emplace(l, int(dense.size())).first->second;
   const std::size_t s = dense.size();
+  if(history)
+  {
+    history->labels = labels;
+    history->steps.clear();
+    history->answer = 0;
+  }
   // per segment: neighbour -> boundary; sparse, since a mesh with many
   // components has many segments
   std::vector<std::map<std::size_t, Segment_boundary>> boundary(s);
@@ -146,9 +183,18 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
       m.area += a;
     }
   }
-  for(std::size_t count = s; count > min_segments; --count)
+  std::vector<std::size_t> answer; // `target` where the answer ends
+  bool past = false;               // past the answer: no limit, no count
+  for(std::size_t count = s; count > 1; --count)
   {
-    double cheapest = std::numeric_limits<double>::infinity();
+    if(!past && count <= min_segments)
+    {
+      if(!history)
+        break;
+      answer = target;
+      past = true;
+    }
+    double cheapest = std::numeric_limits<double>::infinity(), strength = 0.;
     std::size_t wa = s, wb = s;
     for(std::size_t a = 0; a < s; ++a)
       for(const auto& nb : boundary[a]) // merged segments have no neighbours left
@@ -156,20 +202,36 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
         const std::size_t b = nb.first;
         if(b < a || nb.second.length <= 0.)
           continue;
-        const double c = std::min(area[a], area[b]) < small
-                           ? -1. + std::min(area[a], area[b]) / small // in [-1, 0): before every boundary
-                           : cost(nb.second, std::min(area[a], area[b]) / total_area,
+        const double smaller = std::min(area[a], area[b]);
+        const Merge_cost c = cost(nb.second, smaller / total_area,
                                   coordinates ? embedding_separation(moments[a], moments[b])
                                               : std::numeric_limits<double>::infinity());
-        if(c < cheapest) // strict: ties go to the smallest labels
+        // small segments go in [-1, 0): before every boundary
+        const double order = smaller < small ? -1. + smaller / small : past || c.strength < limit ? c.order : NAN;
+        if(order < cheapest) // strict: ties go to the smallest labels
         {
-          cheapest = c;
+          cheapest = order;
+          strength = c.strength;
           wa = a;
           wb = b;
         }
       }
+    if(wa == s && !past && history)
+    {
+      // every boundary is too strong: the answer ends here
+      answer = target;
+      past = true;
+      ++count;
+      continue;
+    }
     if(wa == s)
       break; // no two segments touch, or every boundary is too strong
+    if(history)
+    {
+      history->steps.push_back({wa, wb, strength});
+      if(!past)
+        ++history->answer;
+    }
     // b joins a: b's boundaries become a's
     boundary[wa].erase(wb);
     for(const auto& nb : boundary[wb])
@@ -191,10 +253,31 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
       if(t == wb)
         t = wa;
   }
+  if(past)
+    target = std::move(answer);
   std::map<int, int> renumber;
   for(int& l : labels)
     l = renumber.emplace(int(target[std::size_t(l)]), int(renumber.size())).first->second;
   return renumber.size();
+}
+
+// merge_weakest_boundaries() without its checks, recording its merges in
+// `history` (see merge_cheapest_boundaries()).
+inline std::size_t merge_weakest(const Dual_graph& graph, const std::vector<double>& weights, std::vector<int>& labels,
+                                 std::size_t k, double strength_limit, double min_area_fraction, double size_exponent,
+                                 const Embedding_separation& separation, Merge_history* history = nullptr)
+{
+  const bool separate = separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0;
+  return merge_cheapest_boundaries(
+    graph, weights, labels, k, min_area_fraction, strength_limit,
+    [size_exponent, &separation](const Segment_boundary& b, double smaller, double r) {
+      const double mean = b.weight / b.length;
+      double c = size_exponent > 0. ? mean * std::pow(smaller, size_exponent) : mean;
+      if(r < separation.scale) // r is infinite without coordinates
+        c *= std::pow(r / separation.scale, separation.exponent);
+      return Merge_cost{c, mean};
+    },
+    separate ? separation.coordinates : nullptr, history);
 }
 
 } // namespace internal
@@ -262,19 +345,8 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
   if(separation.coordinates && !(separation.exponent >= 0. && separation.scale > 0.))
     throw Invalid_input(
       "merge_weakest_boundaries: the separation scale must be positive and its exponent a number of at least 0");
-  const bool separate = separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0;
-  return internal::merge_cheapest_boundaries(
-    graph, weights, labels, k, min_area_fraction,
-    [strength_limit, size_exponent, &separation](const internal::Segment_boundary& b, double smaller, double r) {
-      const double mean = b.weight / b.length;
-      if(mean >= strength_limit)
-        return std::numeric_limits<double>::infinity();
-      double c = size_exponent > 0. ? mean * std::pow(smaller, size_exponent) : mean;
-      if(r < separation.scale) // r is infinite without coordinates
-        c *= std::pow(r / separation.scale, separation.exponent);
-      return c;
-    },
-    separate ? separation.coordinates : nullptr);
+  return internal::merge_weakest(graph, weights, labels, k, strength_limit, min_area_fraction, size_exponent,
+                                separation);
 }
 
 /// \ingroup PkgSpectralSegRefinement
