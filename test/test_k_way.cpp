@@ -612,6 +612,29 @@ TEST_CASE("contrast merge: the embedding separation orders the merges, the limit
   CHECK(h.nodes[0].cut_order == 0);
 }
 
+TEST_CASE("merge: the boundary of each pair with the other segments", "[merge]")
+{
+  // thirds of a strip of unit squares: boundaries 0|1 and 1|2 of length 1.
+  // Before any merge, 0 and 1 together meet 2 along 1, and so do 1 and 2;
+  // once two are merged the last pair meets nothing else
+  const Dual_graph g = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::square_strip(12)));
+  std::vector<int> labels(24);
+  for(std::size_t f = 0; f < 24; ++f)
+    labels[f] = int(f / 8);
+  std::vector<double> seen; // per pass, per pair: the first pass sees 0|1 and 1|2, the second 01|2
+  Refinement::internal::merge_cheapest_boundaries(
+    g, {}, labels, 1, 0., std::numeric_limits<double>::infinity(),
+    [&](const Refinement::internal::Segment_boundary& b, double, double, double outer) {
+      CHECK(b.length == Approx(1.));
+      seen.push_back(outer);
+      return Refinement::internal::Merge_cost{double(seen.size()), 0.};
+    });
+  REQUIRE(seen.size() == 3);
+  CHECK(seen[0] == Approx(1.));
+  CHECK(seen[1] == Approx(1.));
+  CHECK(seen[2] == Approx(0.).margin(1e-12));
+}
+
 TEST_CASE("contrast merge: the neck ratio keeps the compact part and merges the long one, at any scale",
           "[hybrid][merge]")
 {

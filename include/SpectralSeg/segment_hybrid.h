@@ -60,7 +60,11 @@ struct Basic_hybrid_options
   /// \f$a\f$ is the area of the smaller of the two segments and \f$\ell\f$
   /// the boundary's length. A limb or a handle meets the rest along a short
   /// loop for its area (a large ratio: kept), a slice of a body along a long
-  /// one (a small ratio: merged). The ratio does not depend on the mesh's
+  /// one (a small ratio: merged). With the neck factor comes the slice
+  /// factor: where the boundary is longer than the loop \f$o\f$ along
+  /// which the two segments together meet the others, it cuts through one
+  /// part (a head into face and back), and the metric contrast is also
+  /// multiplied by \f$(o/\ell)^2\f$. Neither ratio depends on the mesh's
   /// scale or resolution. At least 0
   double neck_scale = 0.4;
   /// when positive, the answer has this many parts (or as many as the
@@ -85,7 +89,7 @@ namespace internal {
 // mean (the boundary's contrast) is below `limit` and more than
 // `min_segments` are left (with a positive
 // `neck_scale` the metric contrast is multiplied by the pair's neck ratio
-// over `neck_scale`); with
+// over `neck_scale` and by its slice ratio squared); with
 // `separation.coordinates` the pairs are taken in the order of that product
 // times the embedding-separation factor (the limit still applies to the
 // contrast alone). Labels renumbered by their smallest face; returns the
@@ -115,11 +119,16 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
   // boundaries are weak
   return Refinement::internal::merge_cheapest_boundaries(
     graph, weights, labels, min_segments, min_area_fraction, limit,
-    [&](const Refinement::internal::Segment_boundary& x, double smaller, double r) {
+    [&](const Refinement::internal::Segment_boundary& x, double smaller, double r, double outer) {
       const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
       double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
       if(neck_scale > 0.) // the neck ratio: large around a limb, small across a slice of a body
         m *= std::sqrt(smaller * total_area) / x.length / neck_scale;
+      // the slice ratio: a boundary longer than the loop along which the
+      // two segments together meet the others cuts through one part (a
+      // head cut into face and back, a cup's body lengthwise)
+      if(neck_scale > 0. && outer > 0. && outer < x.length)
+        m *= (outer / x.length) * (outer / x.length);
       // the order, not the limit, follows the separation (r is infinite
       // without coordinates)
       const double order = r < separation.scale ? c * m * std::pow(r / separation.scale, separation.exponent) : c * m;

@@ -114,10 +114,11 @@ struct Merge_history
 // Merges adjacent segments, cheapest boundary first: segments under
 // `min_area_fraction` of the area first (smallest first, whatever their
 // boundary), then the pair with the lowest `cost(boundary, smaller,
-// separation).order` among those whose `.strength` is below `limit`, where
-// `smaller` is the area of the pair's smaller segment over the mesh's area
-// and `separation` the pair's embedding_separation() in `coordinates` (one
-// row per face; infinite when `coordinates` is null), while more than
+// separation, outer).order` among those whose `.strength` is below `limit`,
+// where `smaller` is the area of the pair's smaller segment over the mesh's
+// area, `separation` the pair's embedding_separation() in `coordinates` (one
+// row per face; infinite when `coordinates` is null) and `outer` the length
+// of the boundary of the two segments together with the others, while more than
 // `min_segments` are left. `weights` may be empty (then
 // Segment_boundary::weight is 0). Ties go to the pair with the smallest
 // labels. Labels are renumbered 0 .. count-1 by their smallest face;
@@ -161,6 +162,11 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
   std::vector<std::size_t> target(s); // what each dense label became
   for(std::size_t i = 0; i < s; ++i)
     target[i] = i;
+  // each segment's boundary length with the others
+  std::vector<double> perimeter(s, 0.);
+  for(std::size_t a = 0; a < s; ++a)
+    for(const auto& nb : boundary[a])
+      perimeter[a] += nb.second.length;
   std::vector<double> area(s, 0.);
   double total_area = 0.;
   for(std::size_t f = 0; f < n; ++f)
@@ -205,7 +211,8 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
         const double smaller = std::min(area[a], area[b]);
         const Merge_cost c = cost(nb.second, smaller / total_area,
                                   coordinates ? embedding_separation(moments[a], moments[b])
-                                              : std::numeric_limits<double>::infinity());
+                                              : std::numeric_limits<double>::infinity(),
+                                  std::max(0., perimeter[a] + perimeter[b] - 2. * nb.second.length));
         // small segments go in [-1, 0): before every boundary
         const double order = smaller < small ? -1. + smaller / small : past || c.strength < limit ? c.order : NAN;
         if(order < cheapest) // strict: ties go to the smallest labels
@@ -245,6 +252,7 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
       boundary[nb.first].erase(wb);
       boundary[nb.first][wa] = x;
     }
+    perimeter[wa] = std::max(0., perimeter[wa] + perimeter[wb] - 2. * boundary[wb][wa].length);
     boundary[wb].clear();
     area[wa] += area[wb];
     if(coordinates)
@@ -270,7 +278,7 @@ inline std::size_t merge_weakest(const Dual_graph& graph, const std::vector<doub
   const bool separate = separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0;
   return merge_cheapest_boundaries(
     graph, weights, labels, k, min_area_fraction, strength_limit,
-    [size_exponent, &separation](const Segment_boundary& b, double smaller, double r) {
+    [size_exponent, &separation](const Segment_boundary& b, double smaller, double r, double) {
       const double mean = b.weight / b.length;
       double c = size_exponent > 0. ? mean * std::pow(smaller, size_exponent) : mean;
       if(r < separation.scale) // r is infinite without coordinates
