@@ -24,6 +24,8 @@ PACKAGES=(
   python3 gnuplot-nox
   python3-open3d   # the test mesh_outputs_open3d reads the PLY/OBJ outputs back (system python3)
   pybind11-dev python3-dev python3-numpy
+  python3-venv python3-pip python3-setuptools   # the pip install test
+  blender   # the Blender add-on's headless test
 )
 
 if [ "${1:-}" = "--tool" ]; then

@@ -47,6 +47,15 @@ $SEG -q segment data/human_man.off --k auto --auto-method salient-cuts --labels 
 # the default --k auto on the README's mesh
 $SEG -q segment data/human_man.off --k auto --labels "$TMP/a.seg" --png "$OUT/human_auto.png"
 $B/examples/part_aware_sampling data/human_man.off 8 "$OUT/human_sampling.png"
+# the Blender add-on's picture, rendered by Blender (Cycles) after the add-on
+# segmented the mesh (doc/blender.md); skipped without Debian's blender
+if command -v blender > /dev/null; then
+  cmake -DBLENDER="$(command -v blender)" -DSPECTRALSEG="$SEG" -DMODULE_DIR="$PWD/$B/python" -DSOURCE="$PWD" \
+    -DMESH="$PWD/data/human_man.off" -DWORK="$TMP/blender" -DRENDER="$PWD/$OUT/blender_human_auto.png" \
+    -P test/blender/blender_addon.cmake > "$TMP/blender.log"
+else
+  echo "blender not found: $OUT/blender_human_auto.png not regenerated"
+fi
 if [ $quality = 1 ]; then
   rm -f "$OUT"/quality/*.png
   $B/benchmark/bench_psb_quality "$S/psb-dev" --methods kway,contrast,auto,salient,sdf \
