@@ -24,7 +24,7 @@ PACKAGES=(
   python3 gnuplot-nox
   python3-open3d   # the test mesh_outputs_open3d reads the PLY/OBJ outputs back (system python3)
   pybind11-dev python3-dev python3-numpy
-  python3-venv python3-pip python3-setuptools   # the pip install test
+  python3-venv python3-pip python3-setuptools python3-wheel   # the pip install test
   blender   # the Blender add-on's headless test
 )
 
