@@ -6,60 +6,57 @@
 #ifndef SPECTRALSEG_EVALUATION_LABEL_FILES_H
 #define SPECTRALSEG_EVALUATION_LABEL_FILES_H
 
+#include <SpectralSeg/IO/internal/Polygon_soup.h>
+#include <SpectralSeg/IO/internal/Text_cursor.h>
 #include <SpectralSeg/IO/write_face_values.h>
 #include <SpectralSeg/exceptions.h>
 
-#include <cerrno>
-#include <cstdlib>
-#include <fstream>
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace SpectralSeg {
 namespace Evaluation {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The labels of the bytes of a label file (what `read_labels()` and the
+// label fuzz target call).
+inline std::vector<int> parse_labels(const IO::internal::File_bytes& file)
+{
+  IO::internal::Text_cursor in(file, 0);
+  std::vector<int> labels;
+  std::string_view token;
+  while(in.next(token))
+  {
+    std::int64_t v = 0;
+    if(IO::internal::parse_signed(token, v) != IO::internal::Parse_status::ok ||
+       v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+      throw Io_error("label file '" + file.path + "'" + in.where() + ": " + IO::internal::quoted(token) +
+                     " is not an integer label");
+    labels.push_back(static_cast<int>(v));
+  }
+  if(labels.empty())
+    throw Io_error("label file '" + file.path + "' holds no label");
+  return labels;
+}
+
+} // namespace internal
+/// \endcond
+
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief Reads a label file: whitespace-separated integers (the benchmark's
 /// `.seg` files have one per line), one per face in the file's face order.
-/// \throws Io_error if the file cannot be opened or read, holds a token that
-///         is not an integer in the range of `int`, or holds no label; the
-///         message names the file (and the line of a bad token)
+/// \throws Io_error if the file cannot be opened or read, is not a regular
+///         file (a directory, a device, a FIFO), holds a token that is not
+///         an integer in the range of `int`, or holds no label; the message
+///         names the file (and the line of a bad token)
 inline std::vector<int> read_labels(const std::string& path)
 {
-  std::ifstream in(path);
-  if(!in)
-    throw Io_error("cannot open label file '" + path + "'");
-  std::vector<int> labels;
-  std::string line;
-  std::size_t line_number = 0;
-  while(std::getline(in, line))
-  {
-    ++line_number;
-    std::size_t pos = 0;
-    while(true)
-    {
-      pos = line.find_first_not_of(" \t\r\f\v", pos);
-      if(pos == std::string::npos)
-        break;
-      const std::size_t end = std::min(line.find_first_of(" \t\r\f\v", pos), line.size());
-      const std::string token = line.substr(pos, end - pos);
-      pos = end;
-      errno = 0;
-      char* stop = nullptr;
-      const long long v = std::strtoll(token.c_str(), &stop, 10);
-      if(stop != token.c_str() + token.size() || errno == ERANGE || v < std::numeric_limits<int>::min() ||
-         v > std::numeric_limits<int>::max())
-        throw Io_error("label file '" + path + "', line " + std::to_string(line_number) + ": '" + token +
-                       "' is not an integer label");
-      labels.push_back(static_cast<int>(v));
-    }
-  }
-  if(in.bad())
-    throw Io_error("error while reading label file '" + path + "'");
-  if(labels.empty())
-    throw Io_error("label file '" + path + "' holds no label");
-  return labels;
+  return internal::parse_labels(IO::internal::read_file_bytes(path, "label file"));
 }
 
 /// \ingroup PkgSpectralSegEvaluation

@@ -18,6 +18,24 @@
 namespace SpectralSeg {
 namespace IO {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// `read_mesh_file()` on bytes already read (`format`: "off", "obj", "ply"
+// or "stl"): what the fuzz targets call.
+template <typename Point>
+Mesh_file_report read_mesh_bytes(const File_bytes& file, const std::string& format, CGAL::Surface_mesh<Point>& mesh)
+{
+  mesh.clear();
+  Polygon_soup soup = read_polygon_soup(file, format);
+  Mesh_file_report report = polygon_soup_to_mesh(soup, "'" + file.path + "'", mesh, &triangulate_polygon<Point>);
+  report.path = file.path;
+  return report;
+}
+
+} // namespace internal
+/// \endcond
+
 /// \ingroup PkgSpectralSegIO
 /// \brief Reads a mesh file (OFF, OBJ, PLY or STL, by extension, in any
 /// letter case), checks it and repairs what can be repaired without
@@ -48,7 +66,9 @@ namespace IO {
 /// carries no face is skipped: OBJ texture coordinates, normals, groups,
 /// materials, `l` and `p` elements (counted in `ignored_elements`); PLY
 /// elements and properties other than the vertex coordinates and face
-/// lists, whatever their types. The whole file is read into memory first.
+/// lists, whatever their types. The whole file is read into memory first;
+/// a path that is not a regular file (a directory, a device such as
+/// `/dev/zero`, a FIFO) is refused before it is opened.
 ///
 /// Degenerate (zero-area) faces are kept and reported: the library handles
 /// them (see `Mesh_geometry`). Open meshes and several connected components
@@ -67,11 +87,8 @@ template <typename Point>
 Mesh_file_report read_mesh_file(const std::string& path, CGAL::Surface_mesh<Point>& mesh)
 {
   mesh.clear();
-  internal::Polygon_soup soup = internal::read_polygon_soup(path);
-  Mesh_file_report report =
-    internal::polygon_soup_to_mesh(soup, "'" + path + "'", mesh, &internal::triangulate_polygon<Point>);
-  report.path = path;
-  return report;
+  const std::string format = internal::mesh_file_format(path);
+  return internal::read_mesh_bytes(internal::read_file_bytes(path), format, mesh);
 }
 
 } // namespace IO

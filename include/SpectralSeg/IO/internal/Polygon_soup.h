@@ -13,7 +13,9 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace SpectralSeg {
@@ -60,14 +62,26 @@ struct File_bytes
   }
 };
 
-// Reads a whole file; throws Io_error if it cannot be read or is empty.
-inline File_bytes read_file_bytes(const std::string& path)
+// Reads a whole regular file; throws Io_error if it cannot be read, is
+// empty or is not a regular file. A device (/dev/zero, /dev/urandom), a
+// FIFO or a directory is refused before it is opened: the first two never
+// end, and opening a FIFO blocks until a writer comes. `kind` names the
+// file in the messages ("label file"; empty for a mesh).
+inline File_bytes read_file_bytes(const std::string& path, const std::string& kind = std::string())
 {
   File_bytes file;
   file.path = path;
+  const std::string name = (kind.empty() ? "" : kind + " ") + "'" + path + "'";
+  std::error_code status_error;
+  const std::filesystem::file_status status = std::filesystem::status(path, status_error);
+  if(!status_error && std::filesystem::is_directory(status))
+    throw Io_error("cannot read " + name + ": it is a directory");
+  if(!status_error && !std::filesystem::is_regular_file(status))
+    throw Io_error("cannot read " + name + ": not a regular file (a device, FIFO or socket); "
+                   "give a file, or copy the stream to a file first");
   std::FILE* in = std::fopen(path.c_str(), "rb");
   if(in == nullptr)
-    throw Io_error("cannot open '" + path + "': " + std::strerror(errno));
+    throw Io_error("cannot open " + name + ": " + std::strerror(errno));
   char buffer[1 << 16];
   std::size_t got = 0;
   while((got = std::fread(buffer, 1, sizeof(buffer), in)) > 0)
@@ -76,9 +90,9 @@ inline File_bytes read_file_bytes(const std::string& path)
   const int error = errno;
   std::fclose(in);
   if(failed)
-    throw Io_error("cannot read '" + path + "': " + std::strerror(error));
+    throw Io_error("cannot read " + name + ": " + std::strerror(error));
   if(file.data.empty())
-    throw Io_error("'" + path + "' is empty");
+    throw Io_error(name + " is empty");
   return file;
 }
 

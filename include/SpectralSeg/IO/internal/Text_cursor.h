@@ -60,6 +60,8 @@ inline Parse_status parse_signed(std::string_view token, std::int64_t& value)
   const bool negative = !token.empty() && token.front() == '-';
   if(negative)
     token.remove_prefix(1);
+  if(negative && !token.empty() && token.front() == '+')
+    return Parse_status::malformed; // "-+5"
   std::uint64_t magnitude = 0;
   const Parse_status s = parse_unsigned(token, magnitude);
   if(s != Parse_status::ok)
@@ -139,6 +141,8 @@ public:
   }
   // bytes left, an upper bound on what the rest of the file can hold
   std::size_t remaining() const { return std::size_t(end_ - p_); }
+  // the offset of the next byte in the file
+  std::size_t offset() const { return std::size_t(p_ - file_->data.data()); }
   std::size_t line() const { return line_; }
   std::string where() const { return ", line " + std::to_string(line_); }
   [[noreturn]] void fail(const std::string& what) const { file_->fail(where(), what); }

@@ -62,13 +62,21 @@ struct Ply_element
   std::vector<Ply_property> properties;
   std::size_t header_line = 0;
 
+  // whether `p` is the list of vertex indices of the face element
+  bool is_face_list(const Ply_property& p) const
+  {
+    return name == "face" && p.list && (p.name == "vertex_indices" || p.name == "vertex_index");
+  }
+
   // the fewest bytes one element can take: a byte and a separator per
-  // ASCII value, the scalars and list counts in binary
+  // ASCII value; in binary, the scalars, the list counts and three indices
+  // of a face list (shorter faces are refused in binary files: a truncated
+  // file or a wrong count reads as faces of zero vertices)
   std::uint64_t least_bytes(bool ascii) const
   {
     std::uint64_t b = 0;
     for(const Ply_property& p : properties)
-      b += ascii ? 2 : (p.list ? p.count_type.size : p.type.size);
+      b += ascii ? 2 : !p.list ? p.type.size : p.count_type.size + (is_face_list(p) ? 3 * p.type.size : 0);
     return b;
   }
 };
@@ -177,6 +185,7 @@ inline Ply_header read_ply_header(const File_bytes& file)
   // Counts against the size of the file, before anything is allocated.
   const std::uint64_t available = d.size() - h.data_begin;
   std::uint64_t least = 0;
+  std::string counts; // "9 'vertex' (12 bytes each), 8 'face' (13 bytes each)"
   for(const Ply_element& el : h.elements)
   {
     const std::uint64_t per = el.least_bytes(h.ascii);
@@ -189,9 +198,13 @@ inline Ply_header read_ply_header(const File_bytes& file)
                   std::to_string(per) + " bytes each, but only " + std::to_string(available) +
                   " bytes of data follow the header (truncated file or wrong count)");
     least += el.count * per;
+    if(el.count > 0)
+      counts += (counts.empty() ? "" : ", ") + std::to_string(el.count) + " '" + el.name + "' elements (at least " +
+                std::to_string(per) + " bytes each)";
   }
-  if(least > available + 1)
-    file.fail("", "the header announces elements of at least " + std::to_string(least) + " bytes but only " +
+  // an ASCII file may end without a separator after its last value
+  if(least > available + (h.ascii ? 1 : 0))
+    file.fail("", "the header announces " + counts + ", at least " + std::to_string(least) + " bytes, but only " +
                     std::to_string(available) + " bytes of data follow it (truncated file or wrong counts)");
   return h;
 }
@@ -408,6 +421,10 @@ inline void read_ply(const File_bytes& file, Polygon_soup& soup)
         if(n < 0)
           in.fail("the length of " + in.what() + " is negative");
         const bool face_list = int(i) == indices;
+        if(face_list && n < 3 && !h.ascii)
+          in.fail("face " + std::to_string(e) + " has " + std::to_string(n) +
+                  " vertices: a binary face list of fewer than three is refused (it is how a truncated file "
+                  "or wrong counts in the header read)");
         if(face_list && std::uint64_t(n) > max_face_vertices)
           in.fail("face " + std::to_string(e) + " has " + std::to_string(n) + " vertices; faces of more than " +
                   std::to_string(max_face_vertices) + " vertices are refused (split the polygon)");

@@ -34,26 +34,43 @@ inline std::string lowercase_extension(const std::string& path)
   return ext;
 }
 
-// The points and faces of a file, as the file gives them, by format.
-inline Polygon_soup read_polygon_soup(const std::string& path)
+// The format of a mesh file by its extension ("off", "obj", "ply" or
+// "stl"); throws Io_error for another extension (after checking that the
+// file can be read: a missing file says so first).
+inline std::string mesh_file_format(const std::string& path)
 {
   const std::string ext = lowercase_extension(path);
   if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
   {
-    const File_bytes probe = read_file_bytes(path); // a missing file says so first
+    const File_bytes probe = read_file_bytes(path);
     throw Io_error("'" + path + "': unknown mesh format '" + ext + "' (use .off, .obj, .ply or .stl)");
   }
-  const File_bytes file = read_file_bytes(path);
+  return ext;
+}
+
+// The points and faces of the bytes of a file of `format` (as
+// `mesh_file_format()` gives it), as the file gives them.
+inline Polygon_soup read_polygon_soup(const File_bytes& file, const std::string& format)
+{
   Polygon_soup soup;
-  if(ext == "off")
+  if(format == "off")
     read_off(file, soup);
-  else if(ext == "obj")
+  else if(format == "obj")
     read_obj(file, soup);
-  else if(ext == "ply")
+  else if(format == "ply")
     read_ply(file, soup);
-  else
+  else if(format == "stl")
     read_stl(file, soup);
+  else
+    throw Io_error("'" + file.path + "': unknown mesh format '" + format + "' (use .off, .obj, .ply or .stl)");
   return soup;
+}
+
+// The points and faces of a file, as the file gives them, by format.
+inline Polygon_soup read_polygon_soup(const std::string& path)
+{
+  const std::string format = mesh_file_format(path);
+  return read_polygon_soup(read_file_bytes(path), format);
 }
 
 } // namespace internal
