@@ -23,6 +23,7 @@ struct Mesh_file_report
   std::size_t input_vertices = 0;         ///< vertices in the file
   std::size_t input_faces = 0;            ///< faces (polygons) in the file
   std::size_t merged_vertices = 0;        ///< vertices merged with an identical one
+  std::size_t unused_vertices = 0;        ///< vertices (after merging) that no kept face uses, left out of the mesh
   std::size_t non_triangle_faces = 0;     ///< polygons with more than three vertices, triangulated
   std::size_t triangles_from_polygons = 0;///< triangles those polygons became
   std::size_t invalid_faces = 0;          ///< faces with fewer than three distinct vertices, dropped
@@ -50,6 +51,7 @@ struct Mesh_file_report
         warnings.push_back(std::to_string(n) + " " + what);
     };
     say(merged_vertices, "vertices with identical coordinates merged");
+    say(unused_vertices, "vertices that no face uses left out");
     say(non_triangle_faces, "non-triangle faces triangulated into " + std::to_string(triangles_from_polygons) +
                               " triangles (outputs give each such face the value of its first triangle)");
     say(invalid_faces, "faces with fewer than three distinct vertices dropped (outputs give them -1 / nan)");

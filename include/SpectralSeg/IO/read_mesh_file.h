@@ -37,13 +37,15 @@ Mesh_file_report read_mesh_bytes(const File_bytes& file, const std::string& form
 /// \endcond
 
 /// \ingroup PkgSpectralSegIO
-/// \brief Reads a mesh file (OFF, OBJ, PLY or STL, by extension, in any
-/// letter case), checks it and repairs what can be repaired without
+/// \brief Reads a mesh file (OFF, OBJ, PLY or STL, ASCII or binary, by
+/// extension, in any letter case), checks it and repairs what can be repaired without
 /// changing the shape, into a `CGAL::Surface_mesh`.
 ///
 /// Repairs, each counted in the report with a warning:
 /// - vertices with exactly the same coordinates are merged (STL files and
 ///   unwelded exports store each triangle's corners separately);
+/// - vertices that no kept face uses are left out of the mesh (the others
+///   keep the file's order);
 /// - faces with more than three vertices are triangulated (minimum-area
 ///   triangulation of the polygon);
 /// - faces with fewer than three distinct vertices are dropped;

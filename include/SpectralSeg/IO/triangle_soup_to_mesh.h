@@ -60,11 +60,26 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
   const bool oriented_manifold = is_oriented_manifold_soup(soup.points.size(), clean.triangles);
   report.non_manifold_edges = oriented_manifold ? 0 : count_non_manifold_edges(clean.triangles);
 
+  // vertices no kept face uses are left out (the others keep their order):
+  // CGAL counts an isolated vertex as an invalid polygon mesh, and a stray
+  // point would widen the bounding box that framing and scales are taken from
+  std::vector<std::array<std::size_t, 3>>& triangles = clean.triangles;
+  std::vector<std::size_t> new_index(soup.points.size(), 0);
+  for(const std::array<std::size_t, 3>& t : triangles)
+    for(const std::size_t v : t)
+      new_index[v] = 1;
   std::vector<Point> points;
   points.reserve(soup.points.size());
-  for(const auto& p : soup.points)
-    points.push_back(Point(p[0], p[1], p[2]));
-  std::vector<std::array<std::size_t, 3>>& triangles = clean.triangles;
+  for(std::size_t v = 0; v < soup.points.size(); ++v)
+    if(new_index[v] != 0)
+    {
+      new_index[v] = points.size();
+      points.push_back(Point(soup.points[v][0], soup.points[v][1], soup.points[v][2]));
+    }
+  for(std::array<std::size_t, 3>& t : triangles)
+    for(std::size_t& v : t)
+      v = new_index[v];
+  report.unused_vertices = soup.points.size() - points.size();
   const std::size_t points_before = points.size();
   if(!oriented_manifold)
     CGAL::Polygon_mesh_processing::orient_polygon_soup(points, triangles);
@@ -110,7 +125,8 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
 /// repaired exactly as `read_mesh_file()` repairs a file's faces.
 ///
 /// The repairs (identical vertices welded, triangles with fewer than three
-/// distinct vertices and repeated triangles dropped, non-manifold edges and
+/// distinct vertices and repeated triangles dropped, vertices no triangle
+/// uses left out, non-manifold edges and
 /// vertices split, consistent orientation, closed meshes oriented outward)
 /// are counted in the returned report, with a warning each;
 /// `Mesh_file_report::face_of_input_face` maps each triangle of
