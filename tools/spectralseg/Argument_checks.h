@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -118,6 +119,57 @@ inline void check_no_empty_values(const CLI::App& app)
         for(const std::string& value : option->results())
           if(value.empty())
             throw Usage_error(option->get_name() + ": an empty value");
+}
+
+// The number of single-character insertions, deletions and substitutions
+// that turn `a` into `b`.
+inline std::size_t edit_distance(const std::string& a, const std::string& b)
+{
+  std::vector<std::size_t> row(b.size() + 1);
+  for(std::size_t j = 0; j <= b.size(); ++j)
+    row[j] = j;
+  for(std::size_t i = 1; i <= a.size(); ++i)
+  {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for(std::size_t j = 1; j <= b.size(); ++j)
+    {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// Before parsing: the first argument that is not an option of the main
+// command must name a subcommand; otherwise a usage error names the
+// closest subcommand (CLI11 would only say "A subcommand is required").
+// Stops at the first other option (--help, --version, a mistyped option):
+// CLI11 reports those.
+inline void check_subcommand_name(const CLI::App& app, int argc, const char* const* argv)
+{
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string word = argv[i];
+    if(word == "-q" || word == "--quiet")
+      continue;
+    if(!word.empty() && word.front() == '-')
+      return;
+    std::vector<std::string> names;
+    for(const CLI::App* sub : app.get_subcommands({}))
+      names.push_back(sub->get_name());
+    if(names.empty() || std::find(names.begin(), names.end(), word) != names.end())
+      return;
+    std::string closest = names.front(), list;
+    for(const std::string& name : names)
+    {
+      if(edit_distance(word, name) < edit_distance(word, closest))
+        closest = name;
+      list += (list.empty() ? "" : ", ") + name;
+    }
+    throw Usage_error("unknown command '" + word + "'; did you mean '" + closest + "'? (commands: " + list + ")");
+  }
 }
 
 // Before any work: every output path given (empty: not asked for) can be

@@ -93,6 +93,7 @@ int main(int argc, char** argv)
 
   try
   {
+    check_subcommand_name(app, argc, argv);
     app.parse(argc, argv);
     check_no_empty_values(app);
   }
