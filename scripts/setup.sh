@@ -3,6 +3,8 @@
 # document itself. Idempotent; run as root (or with sudo available).
 #   bash scripts/setup.sh           everything
 #   bash scripts/setup.sh --tool    only what the spectralseg tool needs (the demo)
+#   bash scripts/setup.sh --fuzz    everything, and clang with libFuzzer for scripts/fuzz.sh
+#                                   (doc/hardening.md; scripts/sanitize.sh needs only gcc)
 set -euo pipefail
 
 TOOL_PACKAGES=(
@@ -28,8 +30,13 @@ PACKAGES=(
   blender   # the Blender add-on's headless test
 )
 
+# Debian 12's clang is clang 14; libFuzzer (libclang_rt.fuzzer) is in its compiler-rt package
+FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+
 if [ "${1:-}" = "--tool" ]; then
   PACKAGES=("${TOOL_PACKAGES[@]}")
+elif [ "${1:-}" = "--fuzz" ]; then
+  PACKAGES+=("${FUZZ_PACKAGES[@]}")
 fi
 
 missing=()
