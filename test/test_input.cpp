@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading files: every defect gets a clear message or a documented repair.
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Evaluation/label_files.h>
 #include <SpectralSeg/IO/Atomic_output_file.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/IO/triangle_soup_to_mesh.h>
@@ -13,6 +14,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <catch2/catch.hpp>
 
@@ -27,10 +29,12 @@
 #include <iterator>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -347,6 +351,34 @@ std::string octahedron_binary_stl(std::uint32_t announced = 8)
   return s;
 }
 
+// The octahedron in binary OFF as CGAL writes it (big-endian counts and
+// floats, a colour count of 0 after each face): a normal per vertex for
+// `NOFF`, `face_colours` floats per face, a count of vertices to announce.
+std::string octahedron_binary_off(const std::string& keyword = "OFF", std::int32_t announced_vertices = 6,
+                                  std::int32_t face_colours = 0)
+{
+  std::string s = keyword + " BINARY\n";
+  for(const std::int32_t count : {announced_vertices, std::int32_t(8), std::int32_t(12)})
+    put(s, count, true);
+  for(const auto& p : octahedron_points)
+  {
+    for(int c = 0; c < 3; ++c)
+      put(s, float(p[c]), true);
+    for(int c = 0; keyword == "NOFF" && c < 3; ++c)
+      put(s, float(p[c]), true);
+  }
+  for(const auto& f : octahedron_faces)
+  {
+    put(s, std::int32_t(3), true);
+    for(int c = 0; c < 3; ++c)
+      put(s, std::int32_t(f[c]), true);
+    put(s, face_colours, true);
+    for(int c = 0; c < face_colours; ++c)
+      put(s, 0.5f, true);
+  }
+  return s + "\n";
+}
+
 // Reads `text` as a file named `name`; CHECKs that it is read as the
 // octahedron (8 faces, closed).
 void check_octahedron(const std::string& name, const std::string& text)
@@ -415,7 +447,7 @@ TEST_CASE("malformed files are refused with the place at fault", "[input][hostil
   check_refused("extra.off", tri + "3 0 1 2\n3 0 2 1\n", "after the 1 faces");
   check_refused("word_coordinate.off", "OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n", "line 4");
   check_refused("overflow_coordinate.off", "OFF\n3 1 0\n0 0 0\n1 1e999 0\n0 1 0\n3 0 1 2\n", "non-finite");
-  check_refused("binary.off", "OFF BINARY\n", "binary OFF");
+  check_refused("binary.off", "OFF BINARY\n", "the file ends where the vertex count was expected");
 
   check_refused("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "line 4");
   check_refused("forward.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "line 4: a face refers to vertex 7");
@@ -441,6 +473,131 @@ TEST_CASE("malformed files are refused with the place at fault", "[input][hostil
   check_refused("nan.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex nan 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n", "non-finite");
 }
 
+TEST_CASE("binary OFF is read as CGAL writes it, and refused when malformed", "[input][hostile]")
+{
+  check_octahedron("oct_binary.off", octahedron_binary_off());
+  check_octahedron("oct_binary_normals.off", octahedron_binary_off("NOFF"));
+  check_octahedron("oct_binary_face_colours.off", octahedron_binary_off("OFF", 6, 4));
+  // written by CGAL 5.5 (Polyhedron_3, IO::BINARY mode)
+  Mesh m;
+  REQUIRE_NOTHROW(IO::read_mesh_file(SPECTRALSEG_SOURCE_DIR "/fuzz/corpus/fuzz_off/tetrahedron_cgal_binary.off", m));
+  CHECK(num_faces(m) == 4);
+  CHECK(CGAL::is_closed(m));
+
+  check_refused("truncated_binary.off", octahedron_binary_off("OFF", 9),
+                "byte 23: the header announces 9 vertices (12 bytes each) and 8 faces (at least 20 bytes each), "
+                "at least 268 bytes, but only 233 bytes follow");
+  check_refused("negative_binary.off", octahedron_binary_off("OFF", -1), "the vertex count is -1");
+  check_refused("coloured_binary.off", octahedron_binary_off("COFF"), "binary COFF and STOFF are not supported");
+  check_refused("bad_colours_binary.off", octahedron_binary_off("OFF", 6, 5), "colour component count of face 0 is 5");
+  check_refused("trailing_binary.off", octahedron_binary_off() + "x", "unexpected data after the 8 faces");
+  check_refused("no_data_binary.off", "OFF BINARY", "no line end after 'BINARY'");
+  std::string bad_index = octahedron_binary_off();
+  bad_index[11 + 12 + 6 * 12 + 4 + 3] = 6; // the first index of face 0
+  check_refused("bad_index_binary.off", bad_index, "face 0 refers to vertex 6 but the file has 6 vertices");
+  std::string short_face = octahedron_binary_off();
+  short_face[11 + 12 + 6 * 12 + 3] = 2; // face 0 announces 2 vertices
+  check_refused("short_face_binary.off", short_face, "face 0 has 2 vertices; binary faces of fewer than 3");
+}
+
+TEST_CASE("a truncated binary PLY is refused with the counts of its header", "[input][hostile]")
+{
+  // the hostile runs' file: 9 vertices announced, 6 held (8 faces of uchar counts); it was read as a mesh
+  check_refused("truncated_9_of_6.ply", binary_ply<float, std::uint8_t, std::int32_t>("float", "uchar", "int", false, 9),
+                "the header announces 9 'vertex' elements (at least 12 bytes each), 8 'face' elements (at least 13 "
+                "bytes each), at least 212 bytes, but only 176 bytes of data follow it (truncated file or wrong counts)");
+  check_refused("truncated_7_of_6.ply", binary_ply<float, std::uint8_t, std::int32_t>("float", "uchar", "int", true, 7),
+                "7 'vertex' elements");
+  // an empty face list fits the size but is refused in binary: it is how a misaligned file reads
+  std::string empty_face = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                           "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  for(int v = 0; v < 3; ++v)
+    for(int c = 0; c < 3; ++c)
+      put(empty_face, float(v == c), false);
+  put(empty_face, std::uint8_t(0), false);
+  put(empty_face, std::uint8_t(6), false);
+  for(const std::int32_t v : {0, 1, 2, 0, 1, 2})
+    put(empty_face, v, false);
+  check_refused("empty_face.ply", empty_face, "face 0 has 0 vertices: a binary face list of fewer than three is refused");
+}
+
+TEST_CASE("paths that are not regular files are refused before they are read", "[input][hostile]")
+{
+  const fs::path dir = fs::temp_directory_path() / "spectralseg_test_special";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "folder.off");
+  fs::create_symlink("/dev/zero", dir / "zero.off");
+  REQUIRE(::mkfifo((dir / "pipe.ply").c_str(), 0600) == 0);
+  Mesh m;
+  const auto start = std::chrono::steady_clock::now();
+  CHECK_THROWS_WITH(IO::read_mesh_file((dir / "zero.off").string(), m),
+                    Catch::Contains("zero.off': not a regular file (a device, FIFO or socket)"));
+  CHECK_THROWS_WITH(IO::read_mesh_file("/dev/urandom", m), Catch::Contains("'/dev/urandom': not a regular file"));
+  CHECK_THROWS_WITH(IO::read_mesh_file((dir / "pipe.ply").string(), m), Catch::Contains("not a regular file"));
+  CHECK_THROWS_WITH(IO::read_mesh_file((dir / "folder.off").string(), m), Catch::Contains("it is a directory"));
+  CHECK_THROWS_WITH(Evaluation::read_labels((dir / "zero.off").string()),
+                    Catch::Contains("cannot read label file") && Catch::Contains("not a regular file"));
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 1.);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("vertices that no face uses are left out of the mesh", "[input]")
+{
+  Mesh m;
+  const IO::Mesh_file_report r = IO::read_mesh_file(
+    write_binary("unused.off", "OFF\n6 4 0\n5 5 5\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n7 7 7\n"
+                               "3 1 3 2\n3 1 2 4\n3 2 3 4\n3 1 4 3\n"), m);
+  CHECK(r.unused_vertices == 2);
+  CHECK(num_vertices(m) == 4);
+  CHECK(CGAL::is_valid_polygon_mesh(m));
+  CHECK(m.point(*vertices(m).begin()) == K::Point_3(0, 0, 0)); // the file's order kept
+  CHECK(std::find(r.warnings.begin(), r.warnings.end(), "2 vertices that no face uses left out") != r.warnings.end());
+}
+
+TEST_CASE("fuzz seeds are read and fuzz regressions never crash", "[input][hostile][fuzz]")
+{
+  // fuzz/corpus/<target>: legal files; fuzz/regressions/<target>: inputs a
+  // fuzz target once failed on (doc/hardening.md), read into a valid mesh or refused
+  const std::vector<std::pair<std::string, std::string>> targets = {
+    {"fuzz_off", ".off"}, {"fuzz_obj", ".obj"}, {"fuzz_ply_ascii", ".ply"}, {"fuzz_ply_binary", ".ply"},
+    {"fuzz_stl_ascii", ".stl"}, {"fuzz_stl_binary", ".stl"}, {"fuzz_labels", ".seg"}};
+  std::size_t seeds = 0, regressions = 0;
+  for(const auto& [target, ext] : targets)
+    for(const std::string kind : {"corpus", "regressions"})
+    {
+      const fs::path dir = fs::path(SPECTRALSEG_SOURCE_DIR) / "fuzz" / kind / target;
+      if(!fs::exists(dir))
+        continue;
+      for(const auto& entry : fs::directory_iterator(dir))
+      {
+        INFO(entry.path().string());
+        std::ifstream in(entry.path(), std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string path = write_binary("replay" + ext, bytes);
+        (kind == std::string("corpus") ? seeds : regressions) += 1;
+        try
+        {
+          if(ext == ".seg")
+          {
+            CHECK_FALSE(Evaluation::read_labels(path).empty());
+            continue;
+          }
+          Mesh m;
+          IO::read_mesh_file(path, m);
+          CHECK(CGAL::is_valid_polygon_mesh(m));
+          CHECK(CGAL::is_triangle_mesh(m));
+        }
+        catch(const Error& e)
+        {
+          CHECK(kind == std::string("regressions")); // every seed is a legal file
+          CHECK(std::string(e.what()).find("replay") != std::string::npos);
+        }
+      }
+    }
+  CHECK(seeds >= 20);
+  CHECK(regressions >= 6);
+}
+
 TEST_CASE("counts the file cannot hold are refused before allocating", "[input][hostile]")
 {
   // a 40-byte OFF claiming 10^8 faces: refused at once, from the header
@@ -452,7 +609,8 @@ TEST_CASE("counts the file cannot hold are refused before allocating", "[input][
                               "property float z\nend_header\n0 0 0\n", "100000000 'vertex' elements");
   check_refused("claims_list.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\n"
                                    "property float y\nproperty float z\nelement face 1\n"
-                                   "property list uint int vertex_indices\nend_header\n\xff\xff\xff\x0f",
+                                   "property list uint int vertex_indices\nend_header\n\xff\xff\xff\x0f" +
+                                   std::string(12, '\0'),
                 "vertices; faces of more than");
   check_refused("claims_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n100000000 0 1 2\n", "faces of more than");
 }
