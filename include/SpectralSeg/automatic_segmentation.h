@@ -262,8 +262,8 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
       child[c].parent = i;
       child[c].depth = depth;
       h.nodes[i].children[c] = h.nodes.size();
-      queue.push(h.nodes.size());
       h.nodes.push_back(std::move(child[c]));
+      queue.push(h.nodes.size() - 1); // after the node exists: the queue's order reads it
     }
     ++parts;
   }
