@@ -34,7 +34,12 @@ BUILD=build-fuzz
 CXX=clang++ nice -n 15 cmake -S . -B $BUILD -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPECTRALSEG_BUILD_FUZZERS=ON \
   -DSPECTRALSEG_BUILD_TOOLS=OFF -DSPECTRALSEG_BUILD_TESTS=OFF -DSPECTRALSEG_BUILD_EXAMPLES=OFF \
   -DSPECTRALSEG_BUILD_BENCHMARKS=OFF -DSPECTRALSEG_BUILD_PYTHON=OFF >/dev/null
-nice -n 15 cmake --build $BUILD -j "$BUILD_JOBS" --target "${TARGETS[@]}"
+# every target: `all`, compiled in parallel (CMake's Makefiles build named targets one after the other)
+if [ ${#TARGETS[@]} -eq ${#ALL[@]} ]; then
+  nice -n 15 cmake --build $BUILD -j "$BUILD_JOBS"
+else
+  nice -n 15 cmake --build $BUILD -j "$BUILD_JOBS" --target "${TARGETS[@]}"
+fi
 
 if [ $REPLAY = 1 ]; then
   regex="^fuzz_replay_($(IFS='|'; echo "${TARGETS[*]}"))\$"
