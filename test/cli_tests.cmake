@@ -309,7 +309,7 @@ file(REMOVE_RECURSE ${WORK}/zero.off ${WORK}/folder.obj ${WORK}/pipe.ply)
 file(CREATE_LINK /dev/zero ${WORK}/zero.off SYMBOLIC)
 run_cli(1 "^error: cannot read '[^']*zero.off': not a regular file .a device, FIFO or socket." info ${WORK}/zero.off)
 run_cli(1 "^error: cannot read label file '[^']*zero.off': not a regular file" eval --mesh ${WORK}/quads.off
-        ${WORK}/zero.off ${WORK}/zero.off)
+        ${WORK}/zero.off ${WORK}/zero.off -q)
 file(MAKE_DIRECTORY ${WORK}/folder.obj)
 run_cli(1 "^error: cannot read '[^']*folder.obj': it is a directory" segment ${WORK}/folder.obj --k 2 --labels ${WORK}/f.seg)
 execute_process(COMMAND mkfifo ${WORK}/pipe.ply RESULT_VARIABLE mkfifo_rc)
