@@ -2,7 +2,7 @@
 # Builds the tool and the unit tests with AddressSanitizer and
 # UndefinedBehaviorSanitizer (gcc, SPECTRALSEG_SANITIZE=ON) in build-asan/
 # and runs the unit tests and the command-line tests under them
-# (doc/hardening.md). Any sanitizer report fails the run. About 25 minutes
+# (doc/hardening.md). Any sanitizer report fails the run. About 30 minutes
 # of compilation on 2 cores, 10 of tests; not part of CI (scripts/test.sh).
 #   bash scripts/sanitize.sh              build and test
 #   JOBS=1 bash scripts/sanitize.sh       compile on one core (while fuzzing)
