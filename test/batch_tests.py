@@ -233,34 +233,46 @@ def test_resume():
     shutil.rmtree(folder, ignore_errors=True)
     torus(os.path.join(folder, "a.off"), 2.0, 0.5, 12, 8)
     torus(os.path.join(folder, "b.off"), 2.0, 0.7, 10, 8)
-    os.mkfifo(os.path.join(folder, "c.off"))  # the batch blocks reading it: a kill at a known point
+    # a large c.off: the batch spends a second or more on it, a window in which it is killed
+    # halfway (the readers refuse FIFOs, which used to block it at a known point)
+    torus(os.path.join(folder, "c.off"), 2.0, 0.5, 400, 150)
     torus(os.path.join(folder, "d.off"), 3.0, 0.6, 11, 7)
     out = os.path.join(WORK, "kout")
     shutil.rmtree(out, ignore_errors=True)
     args = [TOOL, "batch", "k/a.off", "k/b.off", "k/c.off", "k/d.off", "--out", "kout", "--k", "3"]
     p = subprocess.Popen(args, cwd=WORK, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    # the process of c.off opens the pipe only after a and b are finished (--jobs 1, sorted order)
-    writer = None
+    # c.off is taken up once a and b are written (--jobs 1, sorted order)
     deadline = time.time() + 60
-    while writer is None and time.time() < deadline and p.poll() is None:
+    def b_finished():
         try:
-            writer = os.open(os.path.join(folder, "c.off"), os.O_WRONLY | os.O_NONBLOCK)
-        except OSError:
-            time.sleep(0.02)
-    check(writer is not None, "the batch never reached c.off")
-    p.send_signal(signal.SIGKILL)  # c.off is being read (nothing written to the pipe yet): killed halfway
+            with open(os.path.join(out, "b.off.json")) as f:
+                return "batch" in json.load(f) and os.path.exists(os.path.join(out, "b.off.seg"))
+        except (OSError, ValueError):
+            return False
+
+    while time.time() < deadline and p.poll() is None and not b_finished():
+        time.sleep(0.01)
+    check(p.poll() is None, "the batch ended before c.off was killed halfway")
+    p.send_signal(signal.SIGKILL)  # c.off is being segmented: killed halfway
     p.wait()
-    os.close(writer)
-    # the process of c.off died with the batch: nobody reads the pipe any more
-    reader_left = True
+
+    def processes_of_c():
+        found = []
+        for pid in os.listdir("/proc"):
+            try:
+                with open("/proc/%s/cmdline" % pid, "rb") as f:
+                    if b"k/c.off" in f.read():
+                        found.append(pid)
+            except OSError:
+                pass
+        return found
+
+    # the process of c.off dies with the batch
     for _ in range(100):
-        try:
-            os.close(os.open(os.path.join(folder, "c.off"), os.O_WRONLY | os.O_NONBLOCK))
-            time.sleep(0.02)
-        except OSError:
-            reader_left = False
+        if not processes_of_c():
             break
-    check(not reader_left, "the process of c.off outlived the killed batch")
+        time.sleep(0.02)
+    check(not processes_of_c(), "the process of c.off outlived the killed batch")
     left = sorted(f for f in os.listdir(out))
     check(left == ["a.off.json", "a.off.seg", "b.off.json", "b.off.seg"],
           "after the kill the output folder should hold a and b only (no summary, nothing of c): %s" % left)
@@ -306,8 +318,9 @@ def test_resume():
     batch(*args[2:-1], "4", "--force", expect_rc=0)
     check(skipped() == dict.fromkeys("abcd", False), "--force: should redo everything: %s" % skipped())
 
-    # a mesh that hangs is stopped by --timeout and recorded; the batch goes on
-    os.mkfifo(os.path.join(folder, "hang.off"))
+    # a mesh that takes too long (240,000 faces, several seconds) is stopped by
+    # --timeout and recorded; the batch goes on
+    torus(os.path.join(folder, "hang.off"), 2.0, 0.5, 600, 200)
     start = time.time()
     p = batch("k/a.off", "k/hang.off", "--out", "tout", "--k", "3", "--timeout", "1", expect_rc=1)
     table = {r["mesh"]: r for r in rows("tout")}
