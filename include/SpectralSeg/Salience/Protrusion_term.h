@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace SpectralSeg {
 namespace Salience {
@@ -37,6 +38,16 @@ namespace Salience {
 /// across a body (which the covariance box sees as a thin, small base) then
 /// counts as a wide base, and a limb cut at its narrow root stays protrusive.
 ///
+/// `Base::cut_loop` (our variant) takes the area enclosed by the cut itself:
+/// the norm of the vector area \f$\frac12\sum (a - o) \times (b - o)\f$ of
+/// the boundary's edges \f$(a, b)\f$, oriented as in the faces of the
+/// prefix, about the mean \f$o\f$ of the boundary's vertices. For a planar
+/// loop it is the loop's exact area; a cut across a whole body (a symmetric
+/// half) encloses the body's cross-section, so the half is not protrusive,
+/// while the covariance box of a long, thin seam is small. Each position
+/// still costs \f$O(1)\f$: the sums of \f$a \times b\f$ and of \f$b - a\f$
+/// are updated as faces join the prefix.
+///
 /// \cgalModels `SalienceTerm`
 class Protrusion_term : public Term_base
 {
@@ -45,7 +56,8 @@ public:
   enum class Base
   {
     covariance, ///< \f$4\sqrt{\lambda_1\lambda_2}\f$ of the boundary vertices (the thesis)
-    perimeter   ///< \f$l^2 / 4\pi\f$, \f$l\f$ the boundary's length
+    perimeter,  ///< \f$l^2 / 4\pi\f$, \f$l\f$ the boundary's length
+    cut_loop    ///< the area enclosed by the boundary (its vector area's norm)
   };
 
   /// \param base how the base area is estimated
@@ -66,6 +78,29 @@ public:
     outer_.setZero();
     length_ = 0.;
     edges_ = 0;
+    cross_.setZero();
+    step_.setZero();
+  }
+  void add_face(Mesh_piece::size_type f)
+  {
+    if(base_ != Base::cut_loop)
+      return;
+    // each edge of f towards the piece's other faces: a new boundary edge
+    // oriented as in f, or an old one (oriented as in the neighbour, the
+    // opposite way) leaving the boundary; both add f's orientation
+    const auto& t = piece_->triangles()[f];
+    const auto range = piece_->neighbours(f);
+    for(const Mesh_piece::Neighbour* nb = range.first; nb != range.second; ++nb)
+    {
+      const Mesh_piece::Edge& e = piece_->edges()[nb->edge];
+      Mesh_piece::size_type a = e.vertex[0], b = e.vertex[1];
+      for(int k = 0; k < 3; ++k)
+        if(t[std::size_t(k)] == b && t[std::size_t((k + 1) % 3)] == a)
+          std::swap(a, b);
+      const Eigen::Vector3d pa = piece_->point(a) - origin_, pb = piece_->point(b) - origin_;
+      cross_ += pa.cross(pb);
+      step_ += pb - pa;
+    }
   }
   void add_boundary_edge(Mesh_piece::size_type e)
   {
@@ -100,6 +135,12 @@ public:
       return edges_ > 0 ? std::max(0., length_) * std::max(0., length_) / (4. * CGAL_PI) : 0.;
     if(count_ < 2)
       return 0.;
+    if(base_ == Base::cut_loop)
+    {
+      // sum (a - o) x (b - o) = sum a x b - o x sum (b - a)
+      const Eigen::Vector3d o = sum_ / static_cast<double>(count_);
+      return 0.5 * (cross_ - o.cross(step_)).norm();
+    }
     const double m = static_cast<double>(count_);
     const Eigen::Vector3d mean = sum_ / m;
     const Eigen::Matrix3d covariance = outer_ / m - mean * mean.transpose();
@@ -128,6 +169,7 @@ private:
   std::size_t count_ = 0;
   Eigen::Vector3d sum_ = Eigen::Vector3d::Zero();
   Eigen::Matrix3d outer_ = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d cross_ = Eigen::Vector3d::Zero(), step_ = Eigen::Vector3d::Zero();
 };
 
 } // namespace Salience
