@@ -51,6 +51,12 @@ struct Segmentability_options
   double threshold = 0.1;
   /// only the L tests (the thesis's structure-only mode)
   bool structure_only = false;
+  /// a piece is segmentable only when an L test and an M test both pass
+  /// (our addition; `false`, the thesis: the first test that passes
+  /// decides). A torso's L contour is convex while noise or bends can make
+  /// its M contour pass; a part that sticks out shows in both. Ignored with
+  /// `structure_only`.
+  bool require_agreement = false;
   /// raster resolution, smoothing tolerance, contour size, \f$w_{cvx}\f$
   Contour_options contour;
   /// operators and eigensolver
@@ -98,6 +104,8 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
   Segmentability_result r;
   r.score = 0.;
   const int projections = options.structure_only || !curvatures ? 1 : 2;
+  const bool agreement = options.require_agreement && projections == 2;
+  Segmentability_result first; // with agreement: the first family that passed
   for(int p = 0; p < projections; ++p)
   {
     const Projection kind = p == 0 ? Projection::structure : Projection::geometry;
@@ -109,6 +117,7 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
     r.scores[static_cast<std::size_t>(plain)] = a.score;
     r.projection = std::move(proj);
     r.contour = std::move(a);
+    bool passed = false;
     for(Test t : {plain, normalized})
     {
       if(t == normalized)
@@ -117,15 +126,51 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
         r.scores[static_cast<std::size_t>(t)] = r.contour.normalized_score;
       }
       const double s = r.scores[static_cast<std::size_t>(t)];
-      if(std::isfinite(s))
+      if(std::isfinite(s) && !(agreement && first.segmentable))
         r.score = std::max(r.score, s);
       if(s > options.threshold)
       {
-        r.segmentable = true;
-        r.test = t;
-        r.score = s;
-        return r;
+        if(!agreement)
+        {
+          r.segmentable = true;
+          r.test = t;
+          r.score = s;
+          return r;
+        }
+        passed = true;
+        if(!first.segmentable)
+        {
+          r.test = t;
+          r.score = s;
+        }
+        break;
       }
+    }
+    if(!agreement)
+      continue;
+    if(!passed)
+    {
+      // the score of a failed agreement: the larger score of the family
+      // that failed
+      const std::size_t i = static_cast<std::size_t>(plain), j = static_cast<std::size_t>(normalized);
+      double fail = 0.;
+      for(std::size_t k : {i, j})
+        if(std::isfinite(r.scores[k]))
+          fail = std::max(fail, r.scores[k]);
+      r.segmentable = false;
+      r.test = Test::none;
+      r.score = fail;
+      return r;
+    }
+    if(!first.segmentable)
+    {
+      first = r; // the L family passed: its contour gives the samples
+      first.segmentable = true;
+    }
+    else
+    {
+      first.scores = r.scores;
+      return first;
     }
   }
   return r;

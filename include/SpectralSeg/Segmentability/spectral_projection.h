@@ -43,6 +43,22 @@ struct Projection_options
   std::size_t lanczos_vectors = 20;
   /// relative tolerance of the eigenvalues
   double tolerance = 1e-8;
+  /// the weight of a concave edge of M is at least \f$\epsilon\f$ (our
+  /// addition; `false`, the thesis: it may fall far below, on faces that are
+  /// flat but for noise, where \f$\kappa\f$ is a tiny negative number)
+  bool concave_floor = false;
+  /// which projections are whitened: their two principal axes scaled to the
+  /// same spread before the contour is drawn (our addition; none, the
+  /// thesis: one scale on both axes, so an M projection that the concave
+  /// weights squeeze into a needle a few pixels thick loses its concavities)
+  enum class Whitening
+  {
+    none,     ///< the thesis
+    geometry, ///< the M projection only (an elongated L projection is a limb without branches)
+    both      ///< L and M
+  };
+  /// which projections are whitened
+  Whitening whiten = Whitening::none;
 };
 
 /// \ingroup PkgSpectralSegSegmentability
@@ -105,6 +121,8 @@ inline Eigen::SparseMatrix<double> projection_operator(const Mesh_piece& piece, 
       const double zn = z.norm();
       const double align = (zn > 0. && len > 0.) ? std::abs(d.dot(z)) / (len * zn) : 0.;
       w[k] = (std::abs(ki) + std::abs(kj)) * align * (len / mean_length);
+      if(options.concave_floor && !(w[k] >= options.convex_weight))
+        w[k] = options.convex_weight;
       if(!std::isfinite(w[k]) || w[k] < options.convex_weight * 1e-3)
         w[k] = std::isfinite(w[k]) ? std::max(w[k], options.convex_weight * 1e-3) : options.convex_weight;
     }
@@ -239,6 +257,28 @@ inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection
   const Eigen::Matrix2d r = qr.matrixQR().topLeftCorner<2, 2>().triangularView<Eigen::Upper>();
   for(std::size_t v = 0; v < n; ++v)
     p.points[v] = r * Eigen::Vector2d(vectors(static_cast<Eigen::Index>(v), 1), vectors(static_cast<Eigen::Index>(v), 2));
+  if(options.whiten == Projection_options::Whitening::both ||
+     (options.whiten == Projection_options::Whitening::geometry && which == Projection::geometry))
+  {
+    // principal axes of the projected points, each scaled to unit spread
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for(const Eigen::Vector2d& q : p.points)
+      mean += q;
+    mean /= double(n);
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for(const Eigen::Vector2d& q : p.points)
+      cov += (q - mean) * (q - mean).transpose();
+    cov /= double(n);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> pca(cov);
+    const Eigen::Vector2d l = pca.eigenvalues();
+    if(l(0) > 1e-12 * l(1) && l(1) > 0.)
+    {
+      const Eigen::Matrix2d w = Eigen::Vector2d(1. / std::sqrt(l(0)), 1. / std::sqrt(l(1))).asDiagonal() *
+                                pca.eigenvectors().transpose();
+      for(Eigen::Vector2d& q : p.points)
+        q = w * (q - mean);
+    }
+  }
   return p;
 }
 
