@@ -31,16 +31,28 @@
 namespace SpectralSeg {
 
 /// \ingroup PkgSpectralSegAutomatic
-/// \brief Parameters of `segment_automatically()`; the defaults are the
-/// thesis's.
+/// \brief Parameters of `segment_automatically()`. The defaults are our
+/// improved top-down method; `thesis()` is the thesis's method as published.
+///
+/// Where the defaults depart from the thesis (figures in doc/benchmarks.md,
+/// \ref ss_quality_salient): the salience `Salience::improved_salience()`
+/// (size saturating at 10% of the piece, protrusion against the area the
+/// cut encloses), so that half of a symmetric body no longer outscores a
+/// limb; M's concave weights floored at \f$\epsilon\f$ and the M
+/// projection whitened before its contour is drawn
+/// (`Segmentability::Projection_options`), so that noisy flat faces do not
+/// squeeze it into a needle; below the first cut of each connected
+/// component, no cut less salient than 0.5 (`min_cut_salience`), which
+/// stops the M test's cuts across a torso; no part under 2% of its
+/// component; at most 64 parts.
 /// \tparam SalienceModel a model of `Salience`
 template <typename SalienceModel = Salience::Thesis_salience>
 struct Automatic_segmentation_options
 {
   /// \f$\eta\f$, structure-only mode, contour and eigensolver parameters (thesis 6.2)
-  Segmentability::Segmentability_options segmentability;
+  Segmentability::Segmentability_options segmentability = improved_segmentability();
   /// how cuts along the face sequence are scored (thesis 6.4)
-  SalienceModel salience = Salience::thesis_salience();
+  SalienceModel salience = Salience::improved_salience();
   /// radii of the successive morphological closings of each cut (thesis
   /// 6.4.3: 3-ring, then 1-ring); empty to keep the raw cut
   std::vector<std::size_t> closing_rings{3, 1};
@@ -55,14 +67,41 @@ struct Automatic_segmentation_options
   /// are not considered (our addition; 0, the thesis's behaviour, lets
   /// small pieces be diced into slivers)
   double min_part_area_fraction = 0.02;
+  /// a piece whose best cut has a lower salience is a final part (our
+  /// addition; 0: every segmentable piece is cut, as in the thesis). The
+  /// default 0.5 is the middle of the salience's range: the M test passes
+  /// pieces of a torso, whose best cuts run across flat faces and score
+  /// 0.3 to 0.45, while a limb's cut scores 0.6 to 0.7.
+  double min_cut_salience = 0.5;
+  /// whether `min_cut_salience` applies to the first cut of a connected
+  /// component too (`false`, the default: the segmentability test alone
+  /// decides whether a whole component is cut, as in the thesis, and the
+  /// floor only stops the recursion inside it; a fish or a vase whose only
+  /// parts meet the body without a crease is then still cut once)
+  bool min_cut_salience_at_roots = false;
 
-  /// the thesis's method as published: no part-size limit, no part budget
-  /// (pieces under `min_piece_faces` faces are still not tested)
+  /// the segmentability options of the improved method: the thesis's, with
+  /// M's concave weights floored at \f$\epsilon\f$ and the M projection
+  /// whitened
+  static Segmentability::Segmentability_options improved_segmentability()
+  {
+    Segmentability::Segmentability_options s;
+    s.projection.concave_floor = true;
+    s.projection.whiten = Segmentability::Projection_options::Whitening::geometry;
+    return s;
+  }
+
+  /// the thesis's method as published: its salience (`Salience::thesis_salience()`),
+  /// its segmentability test, no part-size limit, no part budget (pieces
+  /// under `min_piece_faces` faces are still not tested)
   static Automatic_segmentation_options thesis()
   {
     Automatic_segmentation_options o;
+    o.segmentability = Segmentability::Segmentability_options();
+    o.salience = Salience::thesis_salience();
     o.min_part_area_fraction = 0.;
     o.max_parts = 0;
+    o.min_cut_salience = 0.;
     return o;
   }
 };
@@ -227,8 +266,10 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     }
     const Salient_cut::Face_sequence seq = Salient_cut::face_sequence(piece, weights, st.first, st.second, exec);
     lap("face sequence");
-    Salient_cut::Salient_cut cut = Salient_cut::salient_cut_search(piece, seq.order, salience, test.projection_kind(), false, min_area);
-    if(cut.position == 0)
+    Salient_cut::Salient_cut cut =
+      Salient_cut::salient_cut_search(piece, seq.order, salience, test.projection_kind(), false, min_area);
+    const bool floor = options.min_cut_salience_at_roots || h.nodes[i].parent != Part_node::none;
+    if(cut.position == 0 || (floor && cut.salience < options.min_cut_salience))
     {
       settle();
       continue;
@@ -286,15 +327,19 @@ enum class Automatic_method
   /// (`segment_k_way_automatic()`, our earlier rule)
   concave_merge,
   /// recursive salient cuts of the segmentable pieces
-  /// (`segment_automatically()`, the thesis's chapter 6)
-  salient_cuts
+  /// (`segment_automatically()`, after the thesis's chapter 6), with our
+  /// salience and segmentability test (`Automatic_segmentation_options<>()`)
+  salient_cuts,
+  /// the same as the thesis published it (`Automatic_segmentation_options<>::thesis()`)
+  salient_cuts_thesis
 };
 
 /// \ingroup PkgSpectralSegAutomatic
 /// \brief Segments a triangle mesh into as many parts as it finds, and
 /// returns their number.
 ///
-/// With `Automatic_method::salient_cuts` (thesis ch. 6) the mesh is cut in
+/// With `Automatic_method::salient_cuts` (after thesis ch. 6; as published
+/// with `Automatic_method::salient_cuts_thesis`) the mesh is cut in
 /// two recursively, largest piece first, while a piece passes the
 /// segmentability test, each time at the most salient place along a face
 /// sequence (`segment_automatically()`); the cuts are kept in a
@@ -405,7 +450,8 @@ std::size_t automatic_segmentation(const TriangleMesh& tm, SegmentMap segments,
     return r.number_of_segments;
   }
   auto o = choose_parameter(get_parameter(np, SpectralSeg::internal_np::automatic_options),
-                            Automatic_segmentation_options<>());
+                            method == Automatic_method::salient_cuts_thesis ? Automatic_segmentation_options<>::thesis()
+                                                                            : Automatic_segmentation_options<>());
   o.segmentability.threshold = choose_parameter(get_parameter(np, SpectralSeg::internal_np::segmentability_threshold),
                                                 o.segmentability.threshold);
   o.segmentability.structure_only =

@@ -137,6 +137,19 @@ inline Thesis_salience thesis_salience(
   return Thesis_salience({0.1, 0.3, 0.6}, {0.1, 0.6, 0.3}, Size_term(), std::move(boundary), Protrusion_term());
 }
 
+/// \ingroup PkgSpectralSegSalience
+/// \brief Our salience, the default of `Automatic_segmentation_options`:
+/// the thesis's terms and weights, with the size factor saturating at 10%
+/// of the piece (`Size_term(0.1)`) and the protrusion measured against the
+/// area the cut encloses (`Protrusion_term::Base::cut_loop`), so that a half
+/// of a symmetric body no longer outscores its limbs (doc/benchmarks.md,
+/// \ref ss_quality_salient).
+inline Thesis_salience improved_salience(Boundary_strength_term boundary = Boundary_strength_term())
+{
+  return Thesis_salience({0.1, 0.3, 0.6}, {0.1, 0.6, 0.3}, Size_term(0.1), std::move(boundary),
+                         Protrusion_term(Protrusion_term::Base::cut_loop));
+}
+
 } // namespace Salience
 } // namespace SpectralSeg
 
