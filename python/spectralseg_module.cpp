@@ -653,7 +653,8 @@ py::dict hierarchy_report(const SpectralSeg::Part_hierarchy& h, bool cuts)
 // k chosen by the library: the three methods of `--k auto`.
 py::object automatic(const py::object& vertices, const py::object& faces, const std::string& method_name,
                      long long max_k, const py::object& min_boundary_contrast, double eta, bool structure_only,
-                     double min_part_area, long long max_parts, const py::object& parts, const py::object& depth,
+                     const py::object& min_part_area, const py::object& max_parts, const py::object& parts,
+                     const py::object& depth,
                      const std::string& metric, const std::vector<double>& weights, const std::string& normalization,
                      double vsi_fraction, const py::object& ray_caster, const std::string& kernel,
                      const std::string& sampling, long long samples, long long seed, bool boundary_enhancement,
@@ -662,19 +663,24 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
 {
   const Soup soup = soup_from_arrays(vertices, faces);
   const Graph_options go = graph_options(connect_touching_parts, contact_distance, speck_area_fraction);
-  const std::string method = one_of("method", method_name, {"contrast-merge", "concave-merge", "salient-cuts"});
+  const std::string method =
+    one_of("method", method_name, {"contrast-merge", "concave-merge", "salient-cuts", "salient-cuts-thesis"});
+  const bool salient = method == "salient-cuts" || method == "salient-cuts-thesis";
   const std::size_t max_clusters = count("max_k", max_k, 2, 100000);
   const double contrast =
     min_boundary_contrast.is_none() ? 0. : number("min_boundary_contrast", py::cast<double>(min_boundary_contrast), 0., 1e6);
-  SpectralSeg::Automatic_segmentation_options<> so;
+  typedef SpectralSeg::Automatic_segmentation_options<> Salient_options;
+  Salient_options so = method == "salient-cuts-thesis" ? Salient_options::thesis() : Salient_options();
   so.segmentability.threshold = number("eta", eta, 0., 1.);
   so.segmentability.structure_only = structure_only;
-  so.min_part_area_fraction = number("min_part_area", min_part_area, 0., 0.49);
-  so.max_parts = count("max_parts", max_parts, 0, 1000000);
+  if(!min_part_area.is_none())
+    so.min_part_area_fraction = number("min_part_area", py::cast<double>(min_part_area), 0., 0.49);
+  if(!max_parts.is_none())
+    so.max_parts = count("max_parts", py::cast<long long>(max_parts), 0, 1000000);
   const std::size_t keep_parts = parts.is_none() ? 0 : count("parts", py::cast<long long>(parts), 1, 1000000);
   const std::size_t keep_depth = depth.is_none() ? std::numeric_limits<std::size_t>::max()
                                                  : count("depth", py::cast<long long>(depth), 0, 1000000);
-  if(!depth.is_none() && method != "salient-cuts")
+  if(!depth.is_none() && !salient)
     invalid("depth applies to method='salient_cuts'");
   const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, ray_caster);
   const K_way_settings ks = k_way_settings(kernel, sampling, samples, seed, boundary_enhancement,
@@ -699,7 +705,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
     o.threads = exec.threads();
     const SpectralSeg::Dual_graph& graph = o.m->graph;
     const std::size_t n = graph.number_of_faces();
-    if(method == "salient-cuts")
+    if(salient)
     {
       o.a = SpectralSeg::segment_automatically(graph, SpectralSeg::sequence_weights(graph, exec), so, exec);
       o.labels = o.a.labels;
@@ -750,7 +756,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
   });
   py::dict d = base_report(*out.m, out.timings, out.threads);
   d["method"] = method;
-  if(method == "salient-cuts")
+  if(salient)
   {
     d["eta"] = so.segmentability.threshold;
     d["structure_only"] = structure_only;
@@ -984,8 +990,7 @@ min_boundary_contrast: merging stops once the weakest boundary's mean concave
         py::arg("method") = "contrast_merge", py::arg("max_k") = 20, py::arg("min_boundary_contrast") = py::none(),
         py::arg("eta") = automatic_defaults.segmentability.threshold,
         py::arg("structure_only") = automatic_defaults.segmentability.structure_only,
-        py::arg("min_part_area") = automatic_defaults.min_part_area_fraction,
-        py::arg("max_parts") = static_cast<long long>(automatic_defaults.max_parts), py::arg("parts") = py::none(),
+        py::arg("min_part_area") = py::none(), py::arg("max_parts") = py::none(), py::arg("parts") = py::none(),
         py::arg("depth") = py::none(), py::arg("metric") = "part-aware", py::arg("weights") = default_weights,
         py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01, py::arg("ray_caster") = py::none(),
         py::arg("kernel") = "exponential", py::arg("sampling") = "auto", py::arg("samples") = 0,
@@ -1002,17 +1007,20 @@ auto`), by one of three methods:
         metric (SpectralSeg::segment_hybrid())
     'concave_merge': the same, judged by concavity alone
         (SpectralSeg::segment_k_way_automatic())
-    'salient_cuts': the thesis's chapter 6, recursive cuts of the pieces that
-        pass the segmentability test (SpectralSeg::segment_automatically());
+    'salient_cuts': top-down after the thesis's chapter 6, recursive cuts of
+        the pieces that pass the segmentability test
+        (SpectralSeg::segment_automatically()), with our salience and test;
         the metric, kernel and sampling options do not apply
+    'salient_cuts_thesis': the same as the thesis published it
 
 max_k: clusters of the over-segmentation (merge methods), default 20
 min_boundary_contrast: merge methods, default 4 (contrast) or 3 (concave)
 eta: salient cuts, segmentability threshold, default 0.1
 structure_only: salient cuts, only the L-projection tests, default False
 min_part_area: salient cuts, no part under this fraction of its component's
-    area, default 0.02 (0: the thesis)
+    area, default 0.02 (0 with salient_cuts_thesis)
 max_parts: salient cuts, no cut once there are this many parts, default 64
+    (no limit, 0, with salient_cuts_thesis)
 parts: this many parts, the method's hierarchy cut there instead of where
     the method stops (salient cuts: the first cuts; merge methods: the last
     merges undone, or more merges)

@@ -163,7 +163,7 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
         w.push_back(std::string(option) + " cannot be used here: " + why);
   };
   const bool automatic = o.k == "auto";
-  const bool salient = automatic && o.salient.method == "salient-cuts";
+  const bool salient = automatic && (o.salient.method == "salient-cuts" || o.salient.method == "salient-cuts-thesis");
   if(!automatic)
     ignored({"--max-k", "--min-boundary-contrast", "--auto-method", "--neck-scale", "--parts"}, "it applies to --k auto");
   else if(o.salient.method != "contrast-merge")
@@ -309,7 +309,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     throw SpectralSeg::Invalid_input("--k " + std::to_string(k) + " is larger than the number of faces (" +
                                      std::to_string(n) + ")");
   const SpectralSeg::Execution exec(o.threads, out.callback());
-  if(k == 0 && o.salient.method == "salient-cuts")
+  if(k == 0 && (o.salient.method == "salient-cuts" || o.salient.method == "salient-cuts-thesis"))
   {
     std::vector<int> labels = run_salient_cuts(o.salient, m.graph, exec, report, timings, out);
     t0 = clock::now();

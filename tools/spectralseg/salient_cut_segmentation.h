@@ -1,7 +1,8 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// spectralseg segment --k auto --auto-method salient-cuts: the thesis's
-// chapter-6 method, its hierarchy in the JSON report, cut at a number of
+// spectralseg segment --k auto --auto-method salient-cuts: the top-down
+// method of the thesis's chapter 6, improved (salient-cuts) or as published
+// (salient-cuts-thesis), its hierarchy in the JSON report, cut at a number of
 // parts or a depth.
 #ifndef SPECTRALSEG_TOOLS_SALIENT_CUT_SEGMENTATION_H
 #define SPECTRALSEG_TOOLS_SALIENT_CUT_SEGMENTATION_H
@@ -29,6 +30,7 @@ struct Salient_cut_options
   bool structure_only = false;
   double min_part_area = SpectralSeg::Automatic_segmentation_options<>().min_part_area_fraction;
   std::size_t max_parts = SpectralSeg::Automatic_segmentation_options<>().max_parts;
+  bool min_part_area_given = false, max_parts_given = false; // else salient-cuts-thesis keeps the thesis's
   std::size_t parts = 0;                                         // 0: every leaf
   std::size_t depth = std::numeric_limits<std::size_t>::max(); // max: every leaf
 };
@@ -38,20 +40,25 @@ inline void add_salient_cut_options(CLI::App& cmd, Salient_cut_options& o)
   cmd.add_option("--auto-method", o.method,
                  "--k auto: contrast-merge (over-segment into --max-k clusters, merge while the weakest "
                  "boundary is not both concave and a jump of the part-aware metric; the default, best on psb-dev), "
-                 "concave-merge (the same, judged by concavity alone) or salient-cuts (the thesis's chapter 6: "
-                 "recursive cuts of the pieces that pass the segmentability test, at their most salient place)")
-    ->check(CLI::IsMember({"contrast-merge", "concave-merge", "salient-cuts"}))
+                 "concave-merge (the same, judged by concavity alone), salient-cuts (top-down, after the thesis's chapter 6: "
+                 "recursive cuts of the pieces that pass the segmentability test, at their most salient place; "
+                 "with our salience and test, see doc/benchmarks.md) or salient-cuts-thesis (the same as published)")
+    ->check(CLI::IsMember({"contrast-merge", "concave-merge", "salient-cuts", "salient-cuts-thesis"}))
     ->capture_default_str();
   cmd.add_option("--eta", o.eta, "salient-cuts: segmentability threshold (a piece is cut when a contour scores above it)")
     ->check(Finite_range(0., 1.))
     ->capture_default_str();
   cmd.add_flag("--structure-only", o.structure_only, "salient-cuts: only the L-projection (structure) tests");
   cmd.add_option("--min-part-area", o.min_part_area,
-                 "salient-cuts: no part under this fraction of its component's area (0: the thesis's behaviour)")
+                 "salient-cuts: no part under this fraction of its component's area (0: the thesis's behaviour, "
+                 "the default of salient-cuts-thesis)")
     ->check(Finite_range(0., 0.49))
+    ->each([&o](const std::string&) { o.min_part_area_given = true; })
     ->capture_default_str();
-  cmd.add_option("--max-parts", o.max_parts, "salient-cuts: no cut once there are this many parts (0: no limit)")
+  cmd.add_option("--max-parts", o.max_parts,
+                 "salient-cuts: no cut once there are this many parts (0: no limit, the default of salient-cuts-thesis)")
     ->capture_default_str()
+    ->each([&o](const std::string&) { o.max_parts_given = true; })
     ->check(Count(0, 1000000));
   cmd.add_option("--parts", o.parts,
                  "--k auto: this many parts, the method's hierarchy cut there instead of where the method stops "
@@ -126,11 +133,15 @@ inline std::vector<int> run_salient_cuts(const Salient_cut_options& o, const Spe
                                          std::vector<std::pair<std::string, double>>& timings,
                                          const Progress_printer& out)
 {
-  SpectralSeg::Automatic_segmentation_options<> options;
+  typedef SpectralSeg::Automatic_segmentation_options<> Options_type;
+  const bool thesis = o.method == "salient-cuts-thesis";
+  Options_type options = thesis ? Options_type::thesis() : Options_type();
   options.segmentability.threshold = o.eta;
   options.segmentability.structure_only = o.structure_only;
-  options.min_part_area_fraction = o.min_part_area;
-  options.max_parts = o.max_parts;
+  if(!thesis || o.min_part_area_given)
+    options.min_part_area_fraction = o.min_part_area;
+  if(!thesis || o.max_parts_given)
+    options.max_parts = o.max_parts;
   SpectralSeg::Automatic_segmentation_result r =
     SpectralSeg::segment_automatically(graph, SpectralSeg::sequence_weights(graph, exec), options, exec);
   for(const auto& t : r.timings)
@@ -146,10 +157,10 @@ inline std::vector<int> run_salient_cuts(const Salient_cut_options& o, const Spe
                          std::set<int>(labels.begin(), labels.end()).size())
       labels = at_depth;
   }
-  report["auto_method"] = "salient-cuts";
+  report["auto_method"] = o.method;
   report["eta"] = o.eta;
   report["structure_only"] = o.structure_only;
-  report["min_part_area"] = o.min_part_area;
+  report["min_part_area"] = options.min_part_area_fraction;
   report["parts_found"] = r.number_of_segments;
   report["hierarchy"] = hierarchy_report(r.hierarchy, true);
   return labels;
