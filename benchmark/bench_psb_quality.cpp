@@ -14,6 +14,12 @@
 //                           metric contrast), k-way choosing k by concavity (segment_k_way_automatic), the thesis's recursive salient
 //                           cuts (segment_automatically, ch. 6), CGAL's SDF segmentation (the peer)
 //   --eta E  --min-part-area F  --structure-only   parameters of the salient-cut method
+//   --salient-thesis        the salient-cut method as published (Automatic_segmentation_options::thesis())
+//                           instead of the improved default
+//   --salient-set K=V,...   single settings of the salient-cut method, over the variant's: size=S (size
+//                           saturation), base=covariance|perimeter|loop (protrusion base), floor=0|1 (M's
+//                           concave weights at least epsilon), whiten=none|m|both, agree=0|1 (L and M must both pass),
+//                           min-salience=X, roots=0|1 (min-salience applies to a component's first cut)
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --shard i/N             run only the models whose row number is i mod N
@@ -112,8 +118,9 @@ struct Options
   std::string png_dir;       // pictures of the best and worst models of each method
   double samples_factor = 0; // experiment: Nyström samples = factor * k + 1
   double vsi_fraction = 0.01;
-  double eta = 0.1, min_part_area = SpectralSeg::Automatic_segmentation_options<>().min_part_area_fraction;
-  bool structure_only = false, perimeter_base = false;
+  double eta = 0.1, min_part_area = -1.; // < 0: the variant's
+  bool structure_only = false, perimeter_base = false, salient_thesis = false;
+  std::vector<std::string> salient_set;
   std::size_t auto_k = 0; // > 0: method kway chooses k itself, at most this many (method auto: default 20)
   bool thesis = false;     // K_way_options::thesis(): no extra clusters, the thesis's graph cut, no crease split
   double mu = -1;          // graph-cut smoothness (< 0: the default)
@@ -329,13 +336,44 @@ std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g
 std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
 {
   const SpectralSeg::Execution exec(o.threads);
-  SpectralSeg::Automatic_segmentation_options<> so;
+  typedef SpectralSeg::Automatic_segmentation_options<> Options_type;
+  Options_type so = o.salient_thesis ? Options_type::thesis() : Options_type();
   so.segmentability.threshold = o.eta;
   so.segmentability.structure_only = o.structure_only;
-  so.min_part_area_fraction = o.min_part_area;
+  if(o.min_part_area >= 0.)
+    so.min_part_area_fraction = o.min_part_area;
+  using SpectralSeg::Salience::Protrusion_term;
   if(o.perimeter_base)
-    std::get<2>(so.salience.terms()) =
-      SpectralSeg::Salience::Protrusion_term(SpectralSeg::Salience::Protrusion_term::Base::perimeter);
+    std::get<2>(so.salience.terms()) = Protrusion_term(Protrusion_term::Base::perimeter);
+  for(const std::string& kv : o.salient_set)
+  {
+    const std::size_t eq = kv.find('=');
+    if(eq == std::string::npos)
+      throw std::runtime_error("--salient-set: expected KEY=VALUE, got '" + kv + "'");
+    const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
+    if(key == "size")
+      std::get<0>(so.salience.terms()) = SpectralSeg::Salience::Size_term(std::stod(value));
+    else if(key == "base")
+      std::get<2>(so.salience.terms()) =
+        Protrusion_term(value == "loop" ? Protrusion_term::Base::cut_loop
+                        : value == "perimeter" ? Protrusion_term::Base::perimeter
+                                               : Protrusion_term::Base::covariance);
+    else if(key == "floor")
+      so.segmentability.projection.concave_floor = value == "1";
+    else if(key == "whiten")
+      so.segmentability.projection.whiten =
+        value == "both" ? SpectralSeg::Segmentability::Projection_options::Whitening::both
+        : value == "m"  ? SpectralSeg::Segmentability::Projection_options::Whitening::geometry
+                        : SpectralSeg::Segmentability::Projection_options::Whitening::none;
+    else if(key == "agree")
+      so.segmentability.require_agreement = value == "1";
+    else if(key == "min-salience")
+      so.min_cut_salience = std::stod(value);
+    else if(key == "roots")
+      so.min_cut_salience_at_roots = value == "1";
+    else
+      throw std::runtime_error("--salient-set: unknown key '" + key + "'");
+  }
   return SpectralSeg::segment_automatically(g, SpectralSeg::sequence_weights(g, exec), so, exec).labels;
 }
 
@@ -435,6 +473,10 @@ int run(int argc, char** argv)
       o.structure_only = true;
     else if(a == "--perimeter-base")
       o.perimeter_base = true;
+    else if(a == "--salient-thesis")
+      o.salient_thesis = true;
+    else if(a == "--salient-set")
+      o.salient_set = split(next(), ',');
     else if(a == "--methods")
       o.methods = split(next(), ',');
     else if(a == "--shard")
