@@ -37,6 +37,20 @@ for k in 6 15; do
     --view 0,-1,0,0,0,1 --view -1,0,0,0,0,1 --view 0,1,0,0,0,1
   python3 doc/images/tools/crop_views.py "$TMP/v.png" "$OUT/psb1_kway_k$k.png"
 done
+# the top-down method before (as published) and after (the default), on a human, a
+# hand, an animal, a chair and a machine part: all parts as published; depth 1, 2
+# and all parts now (cropped, half size)
+for m in human:data/human_man.off hand:$S/meshes/hand_closed.off camel:data/camel.off \
+         chair101:$S/psb-dev/off/101.off mech321:$S/psb-dev/off/321.off; do
+  name=${m%%:*}; mesh=${m#*:}
+  $SEG -q segment "$mesh" --k auto --auto-method salient-cuts-thesis --labels "$TMP/t.seg" --png "$TMP/t.png"
+  python3 doc/images/tools/crop_views.py "$TMP/t.png" "$OUT/ch6_${name}_thesis.png" 3 0.5
+  for d in 1 2 all; do
+    depth=(); [ $d = all ] || depth=(--depth $d)
+    $SEG -q segment "$mesh" --k auto --auto-method salient-cuts "${depth[@]}" --labels "$TMP/i.seg" --png "$TMP/i.png"
+    python3 doc/images/tools/crop_views.py "$TMP/i.png" "$OUT/ch6_${name}_depth$d.png" 3 0.5
+  done
+done
 # the salient cuts' hierarchy at depths 1 to 3, and all its parts
 for d in 1 2 3; do
   $SEG -q segment data/human_man.off --k auto --auto-method salient-cuts --depth $d --labels "$TMP/s.seg" \
