@@ -960,9 +960,9 @@ alternative_extra_clusters: other numbers of extra clusters to try (default
            long long samples, long long seed, bool boundary_enhancement, long long threads,
            const py::object& progress, bool report, bool connect_touching_parts, double contact_distance,
            double speck_area_fraction) {
-          return automatic(vertices, faces, "concave-merge", max_k, min_boundary_contrast, 0.1, false, 0.02, 64,
-                           py::none(), py::none(), metric, weights, normalization, vsi_fraction, ray_caster, kernel,
-                           sampling, samples, seed, boundary_enhancement, threads, progress, report,
+          return automatic(vertices, faces, "concave-merge", max_k, min_boundary_contrast, 0.1, false, py::none(),
+                           py::none(), py::none(), py::none(), metric, weights, normalization, vsi_fraction,
+                           ray_caster, kernel, sampling, samples, seed, boundary_enhancement, threads, progress, report,
                            connect_touching_parts, contact_distance, speck_area_fraction);
         },
         py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("max_k") = 20,
