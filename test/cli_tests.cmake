@@ -163,6 +163,23 @@ endforeach()
 expect_lines(el_sc.seg 5558)
 run_cli(0 "segments: 3\n" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --parts 3 --labels ${WORK}/el_sc3.seg -q)
 run_cli(0 "segments: 2\n" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts --depth 1 --labels ${WORK}/el_sc1.seg -q)
+# the thesis's method as published: no minimum part unless asked for
+run_cli(0 "segments: [1-9][0-9]*\n.*json:" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts-thesis
+        --depth 2 --labels ${WORK}/el_sct.seg --json ${WORK}/el_sct.json -q)
+file(READ ${WORK}/el_sct.json sct_json)
+foreach(key "\"auto_method\": \"salient-cuts-thesis\"" "\"min_part_area\": 0.0" "\"hierarchy\"")
+  string(FIND "${sct_json}" "${key}" at)
+  if(at LESS 0)
+    message(FATAL_ERROR "salient-cuts-thesis JSON report lacks ${key}")
+  endif()
+endforeach()
+run_cli(0 "json:" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts-thesis --min-part-area 0.05
+        --depth 1 --labels ${WORK}/el_sct5.seg --json ${WORK}/el_sct5.json -q)
+file(READ ${WORK}/el_sct5.json sct5_json)
+string(FIND "${sct5_json}" "\"min_part_area\": 0.05" at)
+if(at LESS 0)
+  message(FATAL_ERROR "salient-cuts-thesis ignores --min-part-area")
+endif()
 # the merge methods' hierarchy in the JSON, cut at any number of parts
 run_cli(0 "segments: 3\n.*json:" segment ${DATA}/elephant.off --k auto --parts 3 --labels ${WORK}/el_cm3.seg
         --json ${WORK}/el_cm3.json -q)

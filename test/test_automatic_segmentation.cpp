@@ -41,6 +41,32 @@ struct Shape
   Mesh_piece piece() const { return Mesh_piece(graph, all); }
 };
 
+// A body of voxels: a 4 x 2 x 6 torso (part 0), two legs of 1 x 2 x 6 cells
+// under its outer columns (parts 1, 2), two arms of 5 x 2 x 1 cells from its
+// sides near the top (parts 3, 4) and a 2 x 2 x 2 head (part 5). Symmetric
+// about x = 2, so a cut down the middle is a candidate.
+test_meshes::Soup body()
+{
+  std::vector<std::array<int, 3>> cells;
+  std::vector<int> part;
+  auto add = [&](int x0, int x1, int y0, int y1, int z0, int z1, int p) {
+    for(int x = x0; x < x1; ++x)
+      for(int y = y0; y < y1; ++y)
+        for(int z = z0; z < z1; ++z)
+        {
+          cells.push_back({x, y, z});
+          part.push_back(p);
+        }
+  };
+  add(0, 4, 0, 2, 6, 12, 0);
+  add(0, 1, 0, 2, 0, 6, 1);
+  add(3, 4, 0, 2, 0, 6, 2);
+  add(-5, 0, 0, 2, 10, 11, 3);
+  add(4, 9, 0, 2, 10, 11, 4);
+  add(1, 3, 0, 2, 12, 14, 5);
+  return test_meshes::voxel_union(cells, 2, part);
+}
+
 const Shape& star()
 {
   static const Shape s(test_meshes::star(2));
@@ -97,7 +123,7 @@ std::array<double, 3> terms_from_scratch(const Mesh_piece& piece, const std::vec
 // Records the term values at every position of the search.
 struct Recording_salience : Salience::Thesis_salience
 {
-  Recording_salience() : Salience::Thesis_salience(Salience::thesis_salience()) {}
+  explicit Recording_salience(Salience::Thesis_salience s = Salience::thesis_salience()) : Salience::Thesis_salience(s) {}
   double value(const Salience::Cut_state& s, Salience::Projection p) const
   {
     values.push_back(term_values(s));
@@ -187,6 +213,58 @@ TEST_CASE("O(1) salience updates equal a recomputation at every position", "[aut
       before += x;
     CHECK(before == cut.position);
   }
+}
+
+TEST_CASE("our terms: saturating size and the cut loop's area, updated in O(1)", "[automatic]")
+{
+  const Shape& s = star();
+  const Mesh_piece piece = s.piece();
+  const auto order = Salient_cut::face_sequence(piece, sequence_weights(s.graph), 0, piece.number_of_faces() - 1).order;
+  Recording_salience salience(Salience::improved_salience());
+  Salient_cut::salient_cut_search(piece, order, salience, Salience::Projection::structure);
+  REQUIRE(salience.values.size() == order.size() - 1);
+  std::vector<std::uint8_t> in(piece.number_of_faces(), 0);
+  double area = 0., worst_size = 0., worst_loop = 0.;
+  for(std::size_t i = 1; i < order.size(); ++i)
+  {
+    in[order[i - 1]] = 1;
+    area += piece.face_area(order[i - 1]);
+    if(i % 13 != 0)
+      continue;
+    const double ratio = std::min(area, piece.area() - area) / piece.area();
+    worst_size = std::max(worst_size, std::abs(std::min(ratio, 0.1) / 0.2 - salience.values[i - 1][0]));
+    // the boundary's edges, oriented as in their prefix face, about the
+    // boundary vertices' mean
+    std::vector<std::pair<Mesh_piece::size_type, Mesh_piece::size_type>> loop;
+    std::set<Mesh_piece::size_type> vertices;
+    for(const Mesh_piece::Edge& e : piece.edges())
+      if(in[e.face[0]] != in[e.face[1]])
+      {
+        const auto& t = piece.triangles()[in[e.face[0]] ? e.face[0] : e.face[1]];
+        Mesh_piece::size_type a = e.vertex[0], b = e.vertex[1];
+        for(int k = 0; k < 3; ++k)
+          if(t[std::size_t(k)] == b && t[std::size_t((k + 1) % 3)] == a)
+            std::swap(a, b);
+        loop.emplace_back(a, b);
+        vertices.insert(a);
+        vertices.insert(b);
+      }
+    Eigen::Vector3d o = Eigen::Vector3d::Zero();
+    for(auto v : vertices)
+      o += piece.point(v);
+    o /= double(vertices.size());
+    Eigen::Vector3d vector_area = Eigen::Vector3d::Zero();
+    for(const auto& ab : loop)
+      vector_area += 0.5 * (piece.point(ab.first) - o).cross(piece.point(ab.second) - o);
+    const double smaller = std::min(area, piece.area() - area);
+    const double base = vector_area.norm();
+    const double protrusion = base <= smaller ? 1. - base / smaller : 0.;
+    worst_loop = std::max(worst_loop, std::abs(protrusion - salience.values[i - 1][2]));
+  }
+  CHECK(worst_size < 1e-12);
+  CHECK(worst_loop < 1e-9);
+  CHECK_THROWS_AS(Salience::Size_term(0.), Invalid_input);
+  CHECK_THROWS_AS(Salience::Size_term(0.6), Invalid_input);
 }
 
 TEST_CASE("closing removes a one-face notch from a straight cut", "[automatic]")
@@ -294,6 +372,31 @@ TEST_CASE("automatic segmentation of the star: parts, hierarchy, threads", "[aut
   for(const Part_node& n : r3.hierarchy.nodes)
     if(n.tested)
       CHECK(std::isnan(n.scores[2]));
+}
+
+TEST_CASE("the first cut of a body takes a limb, not a half", "[automatic]")
+{
+  const Shape s(body());
+  const Automatic_segmentation_result r =
+    segment_automatically(s.graph, sequence_weights(s.graph), Automatic_segmentation_options<>(), Execution(1));
+  const Part_node& root = r.hierarchy.nodes[r.hierarchy.roots[0]];
+  REQUIRE_FALSE(root.is_leaf());
+  const Part_node& a = r.hierarchy.nodes[root.children[0]];
+  const Part_node& b = r.hierarchy.nodes[root.children[1]];
+  const Part_node& smaller = a.area < b.area ? a : b;
+  std::map<int, std::size_t> parts;
+  for(auto f : smaller.faces)
+    ++parts[s.soup.face_part[f]];
+  int most = -1;
+  for(const auto& p : parts)
+    if(most < 0 || p.second > parts[most])
+      most = p.first;
+  INFO("first cut: " << smaller.faces.size() << " faces, " << parts.size() << " body parts, mostly part " << most
+                     << "; " << r.number_of_segments << " parts in all");
+  CHECK(most >= 1);
+  CHECK(most <= 4); // a leg or an arm
+  CHECK(double(parts[most]) >= 0.9 * double(smaller.faces.size()));
+  CHECK(smaller.area < 0.25 * root.area); // not a half
 }
 
 TEST_CASE("automatic_segmentation(): the mesh entry point and its methods", "[automatic]")
