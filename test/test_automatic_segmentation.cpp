@@ -131,6 +131,22 @@ struct Recording_salience : Salience::Thesis_salience
   }
   mutable std::vector<std::array<double, 3>> values;
 };
+// The smaller side of the first cut of the first component (null if it
+// was not cut) and how many of its faces lie on each of the shape's parts.
+std::pair<const Part_node*, std::map<int, std::size_t>> first_cut(const Automatic_segmentation_result& r,
+                                                                  const test_meshes::Soup& soup)
+{
+  const Part_node& root = r.hierarchy.nodes[r.hierarchy.roots[0]];
+  std::pair<const Part_node*, std::map<int, std::size_t>> out(nullptr, {});
+  if(root.is_leaf())
+    return out;
+  const Part_node& a = r.hierarchy.nodes[root.children[0]];
+  const Part_node& b = r.hierarchy.nodes[root.children[1]];
+  out.first = a.area < b.area ? &a : &b;
+  for(auto f : out.first->faces)
+    ++out.second[soup.face_part[f]];
+  return out;
+}
 } // namespace
 
 TEST_CASE("segmentability: a sphere and a box are not segmentable, a star and a T are", "[automatic]")
@@ -304,14 +320,11 @@ TEST_CASE("automatic segmentation of the star: parts, hierarchy, threads", "[aut
   // the first cut takes one whole limb off the body
   {
     const Part_node& root = r.hierarchy.nodes[r.hierarchy.roots[0]];
-    REQUIRE_FALSE(root.is_leaf());
+    const auto cut = first_cut(r, s.soup);
+    REQUIRE(cut.first);
     CHECK(root.test == Segmentability::Test::structure);
-    const Part_node& a = r.hierarchy.nodes[root.children[0]];
-    const Part_node& b = r.hierarchy.nodes[root.children[1]];
-    const Part_node& limb = a.area < b.area ? a : b;
-    std::map<int, std::size_t> parts;
-    for(auto f : limb.faces)
-      ++parts[s.soup.face_part[f]];
+    const Part_node& limb = *cut.first;
+    const std::map<int, std::size_t>& parts = cut.second;
     std::size_t most = 0;
     for(const auto& p : parts)
       most = std::max(most, p.second);
@@ -380,13 +393,10 @@ TEST_CASE("the first cut of a body takes a limb, not a half", "[automatic]")
   const Automatic_segmentation_result r =
     segment_automatically(s.graph, sequence_weights(s.graph), Automatic_segmentation_options<>(), Execution(1));
   const Part_node& root = r.hierarchy.nodes[r.hierarchy.roots[0]];
-  REQUIRE_FALSE(root.is_leaf());
-  const Part_node& a = r.hierarchy.nodes[root.children[0]];
-  const Part_node& b = r.hierarchy.nodes[root.children[1]];
-  const Part_node& smaller = a.area < b.area ? a : b;
-  std::map<int, std::size_t> parts;
-  for(auto f : smaller.faces)
-    ++parts[s.soup.face_part[f]];
+  auto cut = first_cut(r, s.soup);
+  REQUIRE(cut.first);
+  const Part_node& smaller = *cut.first;
+  std::map<int, std::size_t>& parts = cut.second;
   int most = -1;
   for(const auto& p : parts)
     if(most < 0 || p.second > parts[most])

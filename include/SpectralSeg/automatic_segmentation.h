@@ -389,7 +389,7 @@ enum class Automatic_method
 ///   \cgalParamNBegin{min_part_area_fraction}
 ///     \cgalParamDescription{no part under this fraction of its connected component's area (our addition; 0 for the thesis's behaviour)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{0.02}
+///     \cgalParamDefault{0.02 (0 with `Automatic_method::salient_cuts_thesis`)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_parts}
 ///     \cgalParamDescription{when given, the answer has this many parts (or as many as the hierarchy has leaves, if fewer): the hierarchy cut there (`Part_hierarchy::labels_with_parts()`; the merge methods then smooth the boundaries by their graph cut) instead of where the method stops}
