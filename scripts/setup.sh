@@ -28,6 +28,7 @@ PACKAGES=(
   pybind11-dev python3-dev python3-numpy
   python3-venv python3-pip python3-setuptools python3-wheel   # the pip install test
   blender   # the Blender add-on's headless test
+  slurm-wlm munge parallel python3-kubernetes python3-yaml   # scripts/batch on real schedulers (test/batch_tests.py)
 )
 
 # Debian 12's clang is clang 14; libFuzzer (libclang_rt.fuzzer) is in its compiler-rt package
@@ -55,4 +56,14 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# Debian's slurm and munge packages enable their daemons; the test starts
+# its own single-node cluster, so those installed here are stopped and not
+# started at boot (where systemd runs)
+if [ -d /run/systemd/system ]; then
+  for p in slurm-wlm munge; do
+    if [[ " ${missing[*]} " == *" $p "* ]]; then
+      $SUDO systemctl disable --now slurmctld slurmd munge >/dev/null 2>&1 || true
+    fi
+  done
+fi
 echo "setup: done"

@@ -1,17 +1,23 @@
 #!/usr/bin/env python3
 # Tests of `spectralseg batch` and `batch-merge`, run by CTest as a user runs
-# them (standard library only). One group per CTest test:
+# them (the standard library; PyYAML and the Kubernetes client for the
+# schema check). One group per CTest test:
 #   shards  - a batch of several meshes, one garbage and one empty, as 3 shards
 #             plus a merge equals the unsharded run (labels, summary without
 #             its timing column); same basenames in two folders; usage errors
 #   jobs    - --jobs 2 (1 thread per mesh) equals --jobs 1 (2 threads)
-#   resume  - a batch killed with SIGKILL halfway (deterministically: it is
-#             blocked reading a named pipe) is finished by a rerun that does
+#   resume  - a batch killed with SIGKILL halfway (while it segments a large
+#             mesh) is finished by a rerun that does
 #             not touch the finished meshes; stale, changed and corrupted
 #             outputs are redone; --timeout stops a mesh that hangs
 #   scripts - scripts/batch: the Slurm array (with a stand-in sbatch that runs
 #             the tasks here), the Kubernetes job's shell (run here per index)
-#             and GNU parallel (if installed) give the unsharded result
+#             and GNU parallel give the unsharded result; the Kubernetes files
+#             pass the API's schema
+#   slurm   - the Slurm array submitted to a real single-node cluster
+#             (munged, slurmctld and slurmd started here): the unsharded
+#             result, the merge after the array; a task cancelled halfway,
+#             resubmitted, redoes only what was not finished
 # usage: batch_tests.py GROUP SPECTRALSEG DATA WORK REPO
 import csv
 import json
@@ -412,18 +418,307 @@ echo "$n;cluster"
     run(["sh", "-c", script.replace(" in ", " missing ")], expect_rc=1,
         env=dict(env, JOB_COMPLETION_INDEX="0", SHARDS=shards))
 
-    # GNU parallel, if installed
-    if shutil.which("parallel") is None:
-        print("skipped: scripts/batch/gnu_parallel.sh (GNU parallel is not installed)")
-    else:
+    # the Kubernetes files against the Kubernetes API's schema
+    for name in ("k8s_indexed_job.yaml", "k8s_merge_job.yaml"):
+        for problem in k8s_schema_problems(os.path.join(REPO, "scripts/batch", name)):
+            check(False, "%s: %s" % (name, problem))
+
+    # GNU parallel (scripts/setup.sh installs it)
+    if check(shutil.which("parallel") is not None, "GNU parallel is not installed (bash scripts/setup.sh installs it)"):
         shutil.rmtree(os.path.join(WORK, "parallel"), ignore_errors=True)
         p = run(["bash", os.path.join(REPO, "scripts/batch/gnu_parallel.sh"), "3", "parallel", "in", "-r"] + METHOD,
                 expect_rc=1, env=dict(env, PARALLEL_JOBS="2"))
         same_result("parallel", "full", "gnu_parallel.sh")
 
 
+def k8s_schema_problems(path):
+    """What in a Kubernetes manifest the API's schema does not accept: the
+    models of Debian's Kubernetes Python client (python3-kubernetes, generated
+    from the API's OpenAPI specification) give each object's fields and their
+    types; building the objects checks the required fields and the enums."""
+    import yaml
+    import kubernetes.client
+    problems = []
+
+    def walk(value, type_name, where):
+        if type_name.startswith("list["):
+            if not isinstance(value, list):
+                problems.append("%s: a list expected, got %r" % (where, value))
+                return
+            for i, v in enumerate(value):
+                walk(v, type_name[5:-1], "%s[%d]" % (where, i))
+        elif type_name.startswith("dict("):
+            if not isinstance(value, dict):
+                problems.append("%s: a map expected, got %r" % (where, value))
+                return
+            for k, v in value.items():
+                walk(v, type_name[type_name.index(",") + 1:-1].strip(), "%s.%s" % (where, k))
+        elif type_name in ("str", "datetime", "date"):
+            if not isinstance(value, str):
+                problems.append("%s: a string expected, got %r" % (where, value))
+        elif type_name == "int":
+            if not isinstance(value, int) or isinstance(value, bool):
+                problems.append("%s: an integer expected, got %r" % (where, value))
+        elif type_name == "bool":
+            if not isinstance(value, bool):
+                problems.append("%s: true or false expected, got %r" % (where, value))
+        elif type_name != "object":
+            model = getattr(kubernetes.client, type_name)
+            if not isinstance(value, dict):
+                problems.append("%s: a %s object expected, got %r" % (where, type_name, value))
+                return
+            fields = {json_name: attr for attr, json_name in model.attribute_map.items()}
+            for k, v in value.items():
+                if k not in fields:
+                    problems.append("%s.%s: no such field in %s" % (where, k, type_name))
+                else:
+                    walk(v, model.openapi_types[fields[k]], "%s.%s" % (where, k))
+
+    for doc in yaml.safe_load_all(open(path)):
+        if doc is None:
+            continue
+        kind = "V1" + str(doc.get("kind")) if doc.get("apiVersion") in ("v1", "batch/v1") else None
+        if kind is None or not hasattr(kubernetes.client, kind):
+            problems.append("apiVersion %s, kind %s: not a kind this schema knows" % (doc.get("apiVersion"), doc.get("kind")))
+            continue
+        walk(doc, kind, doc["kind"])
+        try:  # required fields, enums
+            kubernetes.client.ApiClient()._ApiClient__deserialize(doc, kind)
+        except (ValueError, TypeError) as e:
+            problems.append(str(e))
+    return problems
+
+
+class Slurm_cluster:
+    """A Slurm cluster of one node on this machine, from Debian's packages: a
+    munge daemon with its own key, slurmctld and slurmd on free ports, all
+    files in a fresh folder (short: the munge socket's path is limited).
+    Commands get the cluster through $SLURM_CONF (env())."""
+
+    def __init__(self):
+        import socket
+        import tempfile
+        self.dir = tempfile.mkdtemp(prefix="spectralseg-slurm-")
+        d = self.dir
+        for sub in ("munge", "state", "spool", "log"):
+            os.makedirs(os.path.join(d, sub))
+        os.chmod(os.path.join(d, "munge"), 0o700)
+        key = os.path.join(d, "munge", "munge.key")
+        with open(key, "wb") as f:
+            f.write(os.urandom(1024))
+        os.chmod(key, 0o400)
+        self.socket = os.path.join(d, "munge", "socket")
+        subprocess.run(["munged", "--force", "--key-file=" + key, "--socket=" + self.socket,
+                        "--pid-file=" + os.path.join(d, "munge", "pid"), "--log-file=" + os.path.join(d, "log", "munged.log"),
+                        "--seed-file=" + os.path.join(d, "munge", "seed")], check=True)
+        ports = []
+        for _ in range(2):
+            s = socket.socket()
+            s.bind(("127.0.0.1", 0))
+            ports.append(s.getsockname()[1])
+            s.close()
+        host = socket.gethostname().split(".")[0]
+        user = subprocess.run(["id", "-un"], stdout=subprocess.PIPE, text=True, check=True).stdout.strip()
+        self.conf = os.path.join(d, "slurm.conf")
+        with open(self.conf, "w") as f:
+            f.write("""ClusterName=spectralseg-test
+SlurmctldHost={host}(127.0.0.1)
+SlurmctldPort={p0}
+SlurmdPort={p1}
+SlurmUser={user}
+SlurmdUser={user}
+AuthType=auth/munge
+AuthInfo=socket={socket}
+CredType=cred/munge
+StateSaveLocation={d}/state
+SlurmdSpoolDir={d}/spool
+SlurmctldPidFile={d}/slurmctld.pid
+SlurmdPidFile={d}/slurmd.pid
+SlurmctldLogFile={d}/log/slurmctld.log
+SlurmdLogFile={d}/log/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+SchedulerType=sched/builtin
+SelectType=select/cons_tres
+SelectTypeParameters=CR_CPU
+MpiDefault=none
+ReturnToService=2
+KillWait=5
+MinJobAge=3600
+JobCompType=jobcomp/none
+AccountingStorageType=accounting_storage/none
+JobAcctGatherType=jobacct_gather/none
+NodeName={host} NodeAddr=127.0.0.1 CPUs={cpus} RealMemory=2048 State=UNKNOWN
+PartitionName=test Nodes=ALL Default=YES MaxTime=INFINITE State=UP
+""".format(host=host, p0=ports[0], p1=ports[1], user=user, socket=self.socket, d=d, cpus=os.cpu_count()))
+        subprocess.run(["slurmctld", "-f", self.conf, "-i"], check=True, env=self.env())
+        subprocess.run(["slurmd", "-f", self.conf], check=True, env=self.env())
+        deadline = time.time() + 60
+        while time.time() < deadline:
+            p = subprocess.run(["sinfo", "-h", "-o", "%T"], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                               text=True, env=self.env())
+            if p.stdout.strip() == "idle":
+                return
+            time.sleep(0.5)
+        raise RuntimeError("the Slurm node did not come up in 60 s:\n" + self.logs())
+
+    def env(self, base=None):
+        return dict(base or os.environ, SLURM_CONF=self.conf)
+
+    def logs(self):
+        text = ""
+        for name in ("slurmctld.log", "slurmd.log", "munged.log"):
+            try:
+                text += "--- %s\n%s" % (name, open(os.path.join(self.dir, "log", name)).read()[-3000:])
+            except OSError:
+                pass
+        return text
+
+    def jobs(self):
+        """Every job the controller knows: id -> its fields (scontrol show job)."""
+        p = subprocess.run(["scontrol", "-o", "show", "job"], stdout=subprocess.PIPE, text=True, env=self.env())
+        table = {}
+        for line in p.stdout.splitlines():
+            fields = dict(f.split("=", 1) for f in line.split() if "=" in f)
+            if "JobId" in fields:
+                table[fields["JobId"]] = fields
+        return table
+
+    def wait(self, timeout=180):
+        """Until no job is pending or running."""
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            if all(j["JobState"] not in ("PENDING", "RUNNING", "CONFIGURING", "COMPLETING")
+                   for j in self.jobs().values()):
+                return True
+            time.sleep(0.5)
+        return False
+
+    def stop(self):
+        subprocess.run(["scontrol", "shutdown"], env=self.env(), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        subprocess.run(["munged", "--stop", "--socket=" + self.socket], stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL)
+        for name in ("slurmctld.pid", "slurmd.pid", "munge/pid"):
+            for _ in range(50):  # the daemons end within a few seconds
+                try:
+                    pid = int(open(os.path.join(self.dir, name)).read())
+                    os.kill(pid, 0)
+                except (OSError, ValueError):
+                    break
+                time.sleep(0.1)
+            else:
+                os.kill(pid, signal.SIGKILL)
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+
+def test_slurm():
+    for program in ("munged", "slurmctld", "slurmd", "sbatch"):
+        if not check(shutil.which(program) is not None,
+                     "%s is not installed (bash scripts/setup.sh installs slurm-wlm and munge)" % program):
+            return
+    make_dataset()
+    full_run()
+    cluster = Slurm_cluster()
+    try:
+        slurm_runs(cluster)
+    finally:
+        if failures:
+            print(cluster.logs())
+        cluster.stop()
+
+
+def submitted(p):
+    m = re.search(r"array job (\d+) \((\d+) shards\), merge job (\d+)", p.stdout)
+    check(m is not None, "slurm_array.sh did not say what it submitted: " + p.stdout + p.stderr)
+    return m.groups() if m else (None, None, None)
+
+
+def slurm_runs(cluster):
+    # the array script as a user submits it: the resources of a task given
+    # on the command line (the script asks for 4 CPUs and 8 GB by default)
+    env = cluster.env(dict(os.environ, SPECTRALSEG=TOOL, SBATCH_OPTIONS="--cpus-per-task=1 --mem=500M"))
+    script = os.path.join(REPO, "scripts/batch/slurm_array.sh")
+    shutil.rmtree(os.path.join(WORK, "slurm"), ignore_errors=True)
+    start = time.time()
+    array, shards, merge = submitted(run(["bash", script, "3", "slurm", "in", "-r"] + METHOD, expect_rc=0, env=env))
+    check(cluster.wait(), "the Slurm jobs did not end in 180 s")
+    print("slurm: array and merge ended in %.1f s" % (time.time() - start), flush=True)
+    jobs = cluster.jobs()
+    tasks = {j.get("ArrayTaskId"): j for j in jobs.values() if j.get("ArrayJobId") == array}
+    check(sorted(tasks) == ["0", "1", "2"], "slurm: array tasks %s, expected 0 1 2" % sorted(tasks))
+    # a task whose shard holds a failed mesh exits with 1 (shown by sacct); 0 otherwise
+    check(all(j["JobState"] in ("COMPLETED", "FAILED") for j in tasks.values()),
+          "slurm: task states %s" % {i: j["JobState"] for i, j in tasks.items()})
+    check(jobs.get(merge, {}).get("JobState") == "FAILED" and jobs[merge].get("ExitCode") == "1:0",
+          "slurm: the merge job should end with exit code 1 (2 meshes failed): %s" % jobs.get(merge))
+    check(jobs.get(merge, {}).get("Dependency") in (None, "(null)") and
+          float(time.mktime(time.strptime(jobs[merge]["StartTime"], "%Y-%m-%dT%H:%M:%S"))) >=
+          max(time.mktime(time.strptime(j["EndTime"], "%Y-%m-%dT%H:%M:%S")) for j in tasks.values()),
+          "slurm: the merge job started before the array ended")
+    log = open(os.path.join(WORK, "spectralseg-merge-%s.out" % merge)).read()
+    check("batch-merge: 3 shards, 6 meshes" in log, "slurm: the merge job did not merge 3 shards:\n" + log)
+    same_result("slurm", "full", "slurm_array.sh")
+
+    # a task cancelled while it segments a large mesh; the same submission
+    # again finishes the batch without redoing what was finished
+    folder = os.path.join(WORK, "in2")
+    shutil.rmtree(folder, ignore_errors=True)
+    for name, nu in (("a", 12), ("b", 10), ("d", 11), ("e", 9)):
+        torus(os.path.join(folder, name + ".off"), 2.0, 0.5, nu, 8)
+    torus(os.path.join(folder, "c.off"), 2.0, 0.5, 600, 200)  # 240,000 faces: several seconds
+    shutil.rmtree(os.path.join(WORK, "slurm2"), ignore_errors=True)
+    args = ["bash", script, "2", "slurm2", "in2", "-r"] + METHOD
+    array, _, merge = submitted(run(args, expect_rc=0, env=env))
+    # with 2 shards of a b c d e (sorted), task 0 takes a, c, e and task 1 b, d:
+    # once a is written, task 0 segments c
+    deadline = time.time() + 120
+    def a_finished():
+        try:
+            with open(os.path.join(WORK, "slurm2", "a.off.json")) as f:
+                return "batch" in json.load(f)
+        except (OSError, ValueError):
+            return False
+
+    while time.time() < deadline and not a_finished():
+        time.sleep(0.02)
+    task = "0"
+    states = {j.get("ArrayTaskId"): j["JobState"] for j in cluster.jobs().values() if j.get("ArrayJobId") == array}
+    check(a_finished() and states.get(task) == "RUNNING",
+          "slurm: task 0 should be running (on c.off) once a.off is written: %s" % states)
+    run(["scancel", "%s_%s" % (array, task)], expect_rc=0, env=env)
+    check(cluster.wait(), "slurm: the jobs did not end after the cancel")
+    jobs = cluster.jobs()
+    cancelled = [j for j in jobs.values() if j.get("ArrayJobId") == array and j.get("ArrayTaskId") == task]
+    check(len(cancelled) == 1 and cancelled[0]["JobState"] == "CANCELLED",
+          "slurm: the task of c.off should be CANCELLED: %s" % cancelled)
+    job_id = ("SLURM_JOB_ID=%s" % cancelled[0]["JobId"]).encode() if cancelled else b"-"
+    survivors = []
+    for pid in os.listdir("/proc"):
+        try:
+            if job_id in open("/proc/%s/environ" % pid, "rb").read().split(b"\0"):
+                survivors.append(pid)
+        except OSError:
+            pass
+    check(not survivors, "slurm: processes of the cancelled task are still running: %s" % survivors)
+    check(jobs.get(merge, {}).get("JobState") == "FAILED", "slurm: the merge should fail with a shard missing")
+    finished = sorted(f[:-len(".seg")] for f in os.listdir(os.path.join(WORK, "slurm2")) if f.endswith(".off.seg"))
+    check(finished == ["a.off", "b.off", "d.off"], "slurm: after the cancel, finished: %s" % finished)
+    os.remove(os.path.join(folder, "c.off"))  # (smaller: the rerun is quick)
+    torus(os.path.join(folder, "c.off"), 2.5, 0.5, 9, 9)
+    array, _, merge = submitted(run(args, expect_rc=0, env=env))
+    check(cluster.wait(), "slurm: the resubmitted jobs did not end")
+    check(cluster.jobs().get(merge, {}).get("JobState") == "COMPLETED",
+          "slurm: the resubmitted merge: %s" % cluster.jobs().get(merge))
+    table = {r["mesh"]: r for r in rows("slurm2")}
+    check(sorted(table) == ["a.off", "b.off", "c.off", "d.off", "e.off"] and
+          all(r["status"] == "ok" for r in table.values()), "slurm: after the resubmission: %s" % table)
+    check(sorted(m for m, r in table.items() if r["skipped"]) == finished,
+          "slurm: the resubmission should skip exactly the meshes finished before the cancel (%s): %s"
+          % (finished, {m: r["skipped"] for m, r in table.items()}))
+
 os.makedirs(WORK, exist_ok=True)
 start = time.time()
-{"shards": test_shards, "jobs": test_jobs, "resume": test_resume, "scripts": test_scripts}[GROUP]()
+{"shards": test_shards, "jobs": test_jobs, "resume": test_resume, "scripts": test_scripts,
+ "slurm": test_slurm}[GROUP]()
 print("batch %s: %d failures, %.1f s" % (GROUP, len(failures), time.time() - start))
 sys.exit(1 if failures else 0)
