@@ -35,8 +35,10 @@ METHODS = [
     ("K_WAY", "k parts", "Exactly k parts by spectral clustering of the part-aware metric (--k K)", 1),
     ("CONCAVE_MERGE", "Automatic, concavity only", "Merge while the weakest boundary is weakly concave "
      "(--k auto --auto-method concave-merge)", 2),
-    ("SALIENT_CUTS", "Automatic, salient cuts", "The thesis's chapter 6: recursive cuts of the pieces that pass "
-     "the segmentability test (--k auto --auto-method salient-cuts)", 3),
+    ("SALIENT_CUTS", "Automatic, salient cuts", "Top-down after the thesis's chapter 6: recursive cuts of the pieces "
+     "that pass the segmentability test, limbs first (--k auto --auto-method salient-cuts)", 3),
+    ("SALIENT_CUTS_THESIS", "Automatic, salient cuts (thesis)", "The thesis's chapter 6 as published "
+     "(--k auto --auto-method salient-cuts-thesis)", 4),
 ]
 METRICS = [
     ("part-aware", "Part-aware", "Geodesic, angular and volumetric distance blended (the default)"),
@@ -153,7 +155,7 @@ class SPECTRALSEG_OT_segment(bpy.types.Operator):
                 labels = seg.k_way_segmentation(vertices, triangles, self.k, metric=self.metric, **options)
             else:
                 method = self.method.lower()
-                if method != "salient_cuts":
+                if not method.startswith("salient_cuts"):
                     options["metric"] = self.metric
                 if self.parts > 0:
                     options["parts"] = self.parts
@@ -243,7 +245,7 @@ class SPECTRALSEG_PT_panel(bpy.types.Panel):
         layout = self.layout
         layout.prop(s, "method")
         layout.prop(s, "k" if s.method == "K_WAY" else "parts")
-        if s.method != "SALIENT_CUTS":
+        if not s.method.startswith("SALIENT_CUTS"):
             layout.prop(s, "metric")
         layout.prop(s, "materials")
         layout.prop(s, "vertex_groups")

@@ -122,6 +122,10 @@ if args.expect_auto:
     obj.hide_set(False)
     result = bpy.ops.mesh.spectralseg_segment(method="CONTRAST_MERGE", parts=3)
     check(len(set(labels_of(obj).tolist())) == 3, "automatic cut at 3 parts")
+    # both salient-cut methods (they take no metric), cut at 2 parts
+    for method in ("SALIENT_CUTS", "SALIENT_CUTS_THESIS"):
+        result = bpy.ops.mesh.spectralseg_segment(method=method, parts=2)
+        check(result == {"FINISHED"} and len(set(labels_of(obj).tolist())) == 2, method + " cut at 2 parts")
 
 if args.auto:
     check(bpy.ops.mesh.spectralseg_segment(method="CONTRAST_MERGE") == {"FINISHED"}, "automatic operator finished")
