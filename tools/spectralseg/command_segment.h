@@ -5,13 +5,17 @@
 #define SPECTRALSEG_TOOLS_COMMAND_SEGMENT_H
 
 #include "Argument_checks.h"
+#include "Loaded_mesh.h"
 #include "Mesh_outputs.h"
 #include "Work_limits.h"
 #include "metric_choice.h"
 #include "salient_cut_segmentation.h"
 
-#include <SpectralSeg/K_way_options.h>
-#include <SpectralSeg/segment_hybrid.h>
+#include <SpectralSeg/IO/write_face_values.h>
+#include <SpectralSeg/Rendering/render_mesh_geometry.h>
+#include <SpectralSeg/Kernels/Exponential_kernel.h>
+#include <SpectralSeg/Kernels/Gaussian_kernel.h>
+#include <SpectralSeg/Refinement/graph_cut_boost_backends.h> // --graph-cut-backend boost-csr, boost-list
 #include <SpectralSeg/k_way_segmentation.h>
 
 #include <CLI/CLI.hpp>
@@ -149,14 +153,260 @@ inline void add_segment_command(CLI::App& app, Segment_options& o)
 
 // The options given that the method asked for does not use, each with the
 // reason: refused (exit code 2), not ignored.
-std::vector<std::string> inapplicable_segment_options(const Segment_options& o);
+inline std::vector<std::string> inapplicable_segment_options(const Segment_options& o)
+{
+  const CLI::App* cmd = o.cli;
+  std::vector<std::string> w;
+  const auto ignored = [&](std::initializer_list<const char*> options, const std::string& why) {
+    for(const char* option : options)
+      if(given(cmd, option))
+        w.push_back(std::string(option) + " cannot be used here: " + why);
+  };
+  const bool automatic = o.k == "auto";
+  const bool salient = automatic && (o.salient.method == "salient-cuts" || o.salient.method == "salient-cuts-thesis");
+  if(!automatic)
+    ignored({"--max-k", "--min-boundary-contrast", "--auto-method", "--neck-scale", "--parts"}, "it applies to --k auto");
+  else if(o.salient.method != "contrast-merge")
+    ignored({"--neck-scale"}, "it applies to --auto-method contrast-merge");
+  if(!salient)
+    ignored({"--eta", "--structure-only", "--min-part-area", "--max-parts", "--depth"},
+            "it applies to --k auto --auto-method salient-cuts");
+  if(salient)
+    ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--kernel", "--sampling",
+             "--samples", "--seed", "--no-graph-cut", "--graph-cut", "--crease-angle", "--graph-cut-backend",
+             "--extra-clusters", "--alternative-extra-clusters", "--max-k",
+             "--min-boundary-contrast"},
+            "--auto-method salient-cuts uses none of the k-way options");
+  else
+  {
+    if(automatic)
+      ignored({"--extra-clusters", "--alternative-extra-clusters"}, "--k auto over-segments into --max-k clusters itself");
+    if(o.sampling == "exact")
+      ignored({"--samples", "--seed"}, "it sets the Nyström sampling, and --sampling exact takes no samples");
+    if(o.no_graph_cut)
+      ignored({"--graph-cut-backend", "--graph-cut"}, "--no-graph-cut skips the graph cut");
+    for(const std::string& m : inapplicable_metric_options(cmd, o.metric))
+      w.push_back(m);
+  }
+  for(const std::string& m : inapplicable_mesh_output_options(cmd, o.out_mesh, o.parts_dir))
+    w.push_back(m);
+  return w;
+}
+
+// The outputs of `segment`: labels, coloured mesh, picture, JSON report.
+// (with `--json -` the JSON report is all that goes to standard output: the
+// lines naming the files go to standard error, unless -q)
+template <typename Lap>
+int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const std::vector<int>& labels,
+                          const SpectralSeg::Execution& exec, const std::string& metric, nlohmann::ordered_json& report,
+                          const std::vector<std::pair<std::string, double>>& timings, Lap& lap,
+                          std::chrono::steady_clock::time_point started, const Progress_printer& out)
+{
+  const bool json_to_stdout = o.json == "-";
+  const auto say = [&](const std::string& line) {
+    if(json_to_stdout)
+      out.message(line);
+    else
+      std::cout << line << "\n";
+  };
+  const std::size_t n = labels.size();
+  const std::size_t segments = labels.empty() ? 0 : std::size_t(*std::max_element(labels.begin(), labels.end()) + 1);
+  SpectralSeg::IO::write_face_values(o.labels, SpectralSeg::IO::values_in_input_order(m.report, labels, -1));
+  say("segments: " + std::to_string(segments));
+  say("labels: " + o.labels);
+  write_mesh_outputs(o.out_mesh, o.binary, o.parts_dir, m, labels, say);
+  if(!o.png.empty())
+  {
+    SpectralSeg::Rendering::render_face_labels_png(o.png, m.graph.geometry(), labels);
+    say("png: " + o.png);
+  }
+  lap("write");
+
+  if(!o.json.empty())
+  {
+    std::vector<double> areas(segments, 0.);
+    std::vector<std::size_t> counts(segments, 0);
+    for(std::size_t f = 0; f < n; ++f)
+    {
+      areas[std::size_t(labels[f])] += m.graph.geometry().areas[f];
+      ++counts[std::size_t(labels[f])];
+    }
+    nlohmann::ordered_json head;
+    head["mesh"] = o.mesh;
+    head["faces"] = n;
+    head["k"] = o.k == "auto" ? nlohmann::ordered_json("auto") : nlohmann::ordered_json(std::stoul(o.k));
+    head["segments"] = segments;
+    for(auto it = report.begin(); it != report.end(); ++it)
+      head[it.key()] = it.value();
+    report = std::move(head);
+    if(!metric.empty())
+      report["metric"] = metric;
+    report["threads"] = exec.threads();
+    nlohmann::ordered_json segs = nlohmann::json::array();
+    for(std::size_t s = 0; s < segments; ++s)
+      segs.push_back({{"label", s}, {"faces", counts[s]}, {"area", areas[s]}});
+    report["segment_list"] = segs;
+    nlohmann::ordered_json t;
+    for(const auto& st : timings)
+      t[st.first] = st.second;
+    // the wall time: candidates of --alternative-extra-clusters run side by
+    // side, so the stage times can add up to more
+    t["total"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    report["timings_seconds"] = t;
+    if(json_to_stdout)
+      std::cout << report.dump(2) << "\n";
+    else
+    {
+      SpectralSeg::IO::write_text_file(o.json, report.dump(2) + "\n");
+      say("json: " + o.json);
+    }
+  }
+  return 0;
+}
 
 // The value of --k: a number of segments, or 0 for 'auto'.
 // \throws Usage_error if it is neither
-std::size_t parse_k(const std::string& text);
+inline std::size_t parse_k(const std::string& text)
+{
+  if(text == "auto")
+    return 0;
+  std::size_t used = 0;
+  long long v = 0;
+  try
+  {
+    v = std::stoll(text, &used);
+  }
+  catch(const std::exception&)
+  {
+    used = 0;
+  }
+  if(used != text.size() || v < 1 || v > static_cast<long long>(max_clusters))
+    throw Usage_error("--k must be a positive integer up to " + std::to_string(max_clusters) + " or 'auto' (got '" + text + "')");
+  return static_cast<std::size_t>(v);
+}
 
-// spectralseg segment: returns the exit code.
-int run_segment(const Segment_options& o, Progress_printer& out);
+inline int run_segment(const Segment_options& o, Progress_printer& out)
+{
+  using clock = std::chrono::steady_clock;
+  nlohmann::ordered_json report;
+  std::vector<std::pair<std::string, double>> timings;
+  const auto started = clock::now();
+  auto t0 = started;
+  auto lap = [&](const std::string& stage) {
+    const auto now = clock::now();
+    timings.emplace_back(stage, std::chrono::duration<double>(now - t0).count());
+    t0 = now;
+  };
+
+  const std::size_t k = parse_k(o.k);
+  check_mesh_outputs(o.out_mesh, o.parts_dir, {{"--labels", o.labels}, {"--png", o.png}, {"--json", o.json, true}});
+  refuse_inapplicable_options(inapplicable_segment_options(o));
+
+  const Loaded_mesh m(o.mesh, out);
+  lap("read");
+  const std::size_t n = m.graph.number_of_faces();
+  if(k > n)
+    throw SpectralSeg::Invalid_input("--k " + std::to_string(k) + " is larger than the number of faces (" +
+                                     std::to_string(n) + ")");
+  const SpectralSeg::Execution exec(o.threads, out.callback());
+  if(k == 0 && (o.salient.method == "salient-cuts" || o.salient.method == "salient-cuts-thesis"))
+  {
+    std::vector<int> labels = run_salient_cuts(o.salient, m.graph, exec, report, timings, out);
+    t0 = clock::now();
+    return write_segment_outputs(o, m, labels, exec, "", report, timings, lap, started, out);
+  }
+  std::size_t most_extra = o.extra_clusters;
+  for(std::size_t e : o.alternative_extra_clusters)
+    most_extra = std::max(most_extra, e);
+  check_segmentation_fits(n, k == 0 ? std::min(o.max_k, n - 1) : std::min(k + most_extra, n - 1), o.sampling,
+                          o.samples, SpectralSeg::Embedding::Embedding_options().exact_face_limit);
+  const SpectralSeg::Metrics::Any_weight metric = make_metric(o.metric);
+  const std::vector<double> weights = metric(m.graph, exec);
+  const SpectralSeg::Weighted_dual_graph weighted(m.graph, weights);
+  lap("metric");
+
+  SpectralSeg::K_way_options options;
+  options.embedding.method = o.sampling == "exact" ? SpectralSeg::Embedding::Method::exact
+                             : o.sampling == "auto" ? SpectralSeg::Embedding::Method::automatic
+                                                    : SpectralSeg::Embedding::Method::nystrom;
+  if(o.sampling == "gamma")
+    options.embedding.sampling = SpectralSeg::Embedding::Sampling_method::gamma;
+  options.embedding.samples = o.samples;
+  options.embedding.seed = o.seed;
+  options.extra_clusters = o.extra_clusters;
+  options.alternative_extra_clusters = o.alternative_extra_clusters;
+  options.boundary_enhancement = !o.no_graph_cut;
+  if(o.graph_cut == "thesis")
+    options.graph_cut = SpectralSeg::Refinement::Graph_cut_options();
+  options.crease_angle = o.crease_angle;
+  options.merge_size_exponent = o.merge_size_exponent;
+  options.merge_separation_scale = o.merge_separation;
+  if(o.graph_cut_backend == "maxflow")
+    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::maxflow;
+  else if(o.graph_cut_backend == "boost-csr")
+    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_compressed_sparse_row;
+  else if(o.graph_cut_backend == "boost-list")
+    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_adjacency_list;
+  auto run = [&](const auto& kernel) {
+    SpectralSeg::Basic_K_way_automatic_options<std::decay_t<decltype(kernel)>> automatic;
+    automatic.k_way = options.with_kernel(kernel);
+    automatic.max_k = std::max<std::size_t>(2, std::min(o.max_k, n - 1));
+    if(o.min_boundary_contrast > 0.)
+      automatic.min_boundary_contrast = o.min_boundary_contrast;
+    automatic.parts = o.salient.parts;
+    if(k == 0 && o.salient.method == "contrast-merge")
+    {
+      SpectralSeg::Basic_hybrid_options<std::decay_t<decltype(kernel)>> hybrid;
+      hybrid.k_way = automatic.k_way;
+      hybrid.clusters = automatic.max_k;
+      if(o.min_boundary_contrast > 0.)
+        hybrid.min_boundary_contrast = o.min_boundary_contrast;
+      hybrid.neck_scale = o.neck_scale;
+      hybrid.parts = o.salient.parts;
+      return SpectralSeg::segment_hybrid(weighted, hybrid, exec);
+    }
+    return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, automatic, exec)
+                  : SpectralSeg::segment_k_way(weighted, k, automatic.k_way, exec);
+  };
+  const SpectralSeg::K_way_result r =
+    o.kernel == "gaussian" ? run(SpectralSeg::Kernels::Gaussian_kernel()) : run(SpectralSeg::Kernels::Exponential_kernel());
+  for(const auto& t : r.timings)
+    timings.push_back(t);
+  t0 = clock::now();
+  if(k > 0 && r.number_of_segments != k)
+  {
+    const std::size_t parts = m.graph.number_of_components();
+    out.message("warning: " + std::to_string(r.number_of_segments) + " segments instead of " + std::to_string(k) +
+                (parts > k ? ": the mesh is " + std::to_string(parts) +
+                               " separate parts that do not touch (each larger than 1% of the area), and a segment "
+                               "never spans two of them"
+                           : ""));
+  }
+
+  if(k == 0)
+  {
+    report["auto_method"] = o.salient.method;
+    report["hierarchy"] = hierarchy_report(r.hierarchy, false);
+  }
+  warn_missing_parts(o.salient.parts, r.hierarchy, out);
+  report["kernel"] = o.kernel;
+  report["embedding"] = r.embedding.exact ? "exact" : "nystrom";
+  report["samples"] = r.embedding.samples;
+  report["kernel_width"] = r.embedding.kernel_width;
+  report["graph_cut"] = !o.no_graph_cut;
+  if(k > 0)
+    report["extra_clusters"] = r.extra_clusters; // the kept over-segmentation's
+  if(k > 0 && !o.alternative_extra_clusters.empty())
+    report["concave_normalized_cut"] = r.normalized_cut;
+  if(r.embedding.exact && o.sampling == "auto")
+    for(const char* option : {"--samples", "--seed"})
+      if(given(o.cli, option))
+        out.message(std::string("warning: ") + option + " was ignored: --sampling auto chose the exact embedding (" +
+                    std::to_string(n) + " faces, at most " +
+                    std::to_string(SpectralSeg::Embedding::Embedding_options().exact_face_limit) +
+                    "), which takes no samples");
+  return write_segment_outputs(o, m, r.labels, exec, metric.name(), report, timings, lap, started, out);
+}
 
 } // namespace spectralseg_cli
 
