@@ -254,6 +254,14 @@
 /// Headers: `<SpectralSeg/shape_retrieval.h>` (mesh level),
 /// `<SpectralSeg/Retrieval/Shape_descriptor.h>` (dual-graph level).
 
+/// \defgroup PkgSpectralSegRegistration Registration of spectral embeddings
+/// \ingroup PkgSpectralSegRef
+/// \brief Rigid (or similarity) alignment of two spectral embeddings
+/// (`spectral_embedding()`) by closest points from every axis sign flip,
+/// for registration with a metric (thesis 3.6; doc/retrieval.md).
+///
+/// Header: `<SpectralSeg/Registration/align_embeddings.h>`.
+
 /// \defgroup PkgSpectralSegKWay k-way segmentation
 /// \ingroup PkgSpectralSegRef
 /// \brief Segmentation of a mesh into a given number of parts by spectral

@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -726,27 +727,50 @@ TEST_CASE("retrieval scores: nearest neighbour, first and second tier", "[retrie
   CHECK_THROWS_AS(Retrieval::retrieval_scores(d, std::vector<std::string>(4, "a")), Invalid_input);
 }
 
-TEST_CASE("align_embeddings: recovers a rotation and sign flips without correspondences", "[registration]")
+TEST_CASE("align_embeddings: recovers a rotation and sign flips, with or without correspondences", "[registration]")
 {
-  // an anisotropic cloud (no symmetry), rows shuffled, axes flipped and rotated
-  const Eigen::Index n = 300;
+  // a scattered anisotropic cloud (no symmetry), rows shuffled, one axis
+  // flipped, rotated and moved
+  const Eigen::Index n = 200;
   Eigen::MatrixXd a(n, 3);
+  std::uint32_t state = 12345;
+  auto uniform = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  };
   for(Eigen::Index i = 0; i < n; ++i)
+    a.row(i) << 3. * uniform(), 2. * uniform(), uniform();
+  for(const double angle : {0.1, 1.2})
   {
-    const double t = double(i) / double(n);
-    a.row(i) << 3. * std::cos(7. * t) + t, 2. * std::sin(5. * t), t * t - 0.5 * std::cos(11. * t);
+    INFO(angle);
+    const Eigen::Matrix3d r = Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+    Eigen::MatrixXd b(n, 3), b_same_rows(n, 3);
+    for(Eigen::Index i = 0; i < n; ++i)
+    {
+      Eigen::Vector3d p = a.row((i * 7) % n).transpose();
+      p.y() = -p.y();
+      b.row(i) = (r * p + Eigen::Vector3d(0.2, -0.1, 0.4)).transpose();
+    }
+    for(Eigen::Index i = 0; i < n; ++i)
+      b_same_rows.row((i * 7) % n) = b.row(i);
+    // known pairs: exact whatever the rotation
+    Registration::Alignment_options known;
+    known.rows_correspond = true;
+    const Registration::Embedding_alignment k = Registration::align_embeddings(b_same_rows, a, known);
+    CHECK(k.rms_closest < 1e-9);
+    CHECK(k.sign_flips != 0);
+    CHECK((k.aligned - a).norm() < 1e-9);
+    // closest points: from the right flip, a small rotation is recovered exactly
+    if(angle < 0.5)
+    {
+      const Registration::Embedding_alignment c = Registration::align_embeddings(b, a);
+      CHECK(c.rms_closest < 1e-9);
+      for(Eigen::Index i = 0; i < n; ++i)
+        CHECK((c.aligned.row(i) - a.row((i * 7) % n)).norm() < 1e-9);
+    }
   }
-  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
-  Eigen::MatrixXd b(n, 3);
-  for(Eigen::Index i = 0; i < n; ++i)
-  {
-    Eigen::Vector3d p = a.row((i * 7) % n).transpose();
-    p.y() = -p.y();
-    b.row(i) = (r * p + Eigen::Vector3d(0.2, -0.1, 0.4)).transpose();
-  }
-  const Registration::Embedding_alignment al = Registration::align_embeddings(b, a);
-  CHECK(al.rms_closest < 1e-6);
-  for(Eigen::Index i = 0; i < n; ++i)
-    CHECK((al.aligned.row(i) - a.row((i * 7) % n)).norm() < 1e-6);
-  CHECK_THROWS_AS(Registration::align_embeddings(b, Eigen::MatrixXd(n, 2)), Invalid_input);
+  CHECK_THROWS_AS(Registration::align_embeddings(a, Eigen::MatrixXd(n, 2)), Invalid_input);
+  Registration::Alignment_options known;
+  known.rows_correspond = true;
+  CHECK_THROWS_AS(Registration::align_embeddings(a, Eigen::MatrixXd(n - 1, 3), known), Invalid_input);
 }
