@@ -174,8 +174,9 @@ int run(int argc, char** argv)
 
   std::set<std::string> classes(categories.begin(), categories.end());
   std::ostringstream table;
-  table << "| metric | models | categories | nearest neighbour | first tier | second tier | descriptor s/model |\n"
-        << "|---|---:|---:|---:|---:|---:|---:|\n";
+  table << "| metric | models | categories | nearest neighbour | first tier | second tier | median chi-square same / other "
+           "category | descriptor s/model |\n"
+        << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
   char buf[256];
   for(std::size_t k = 0; k < o.metrics.size(); ++k)
   {
@@ -184,22 +185,35 @@ int run(int argc, char** argv)
       for(std::size_t b = 0; b < n; ++b)
         dist[a][b] = Retrieval::chi_square_distance(d[k][a], d[k][b]);
     const Retrieval::Retrieval_scores s = Retrieval::retrieval_scores(dist, categories);
-    std::snprintf(buf, sizeof buf, "| %s | %zu | %zu | %.3f | %.3f | %.3f | %.3f |\n", o.metrics[k].c_str(), n,
-                  classes.size(), s.nearest_neighbor, s.first_tier, s.second_tier, seconds[k] / double(n));
+    std::vector<double> same, other;
+    for(std::size_t a = 0; a < n; ++a)
+      for(std::size_t b = a + 1; b < n; ++b)
+        (categories[a] == categories[b] ? same : other).push_back(dist[a][b]);
+    auto median = [](std::vector<double> x) {
+      std::sort(x.begin(), x.end());
+      return x.empty() ? 0. : x[x.size() / 2];
+    };
+    std::snprintf(buf, sizeof buf, "| %s | %zu | %zu | %.3f | %.3f | %.3f | %.3f / %.3f | %.3f |\n",
+                  o.metrics[k].c_str(), n, classes.size(), s.nearest_neighbor, s.first_tier, s.second_tier,
+                  median(same), median(other), seconds[k] / double(n));
     table << buf;
   }
   if(o.invariance > 0)
   {
-    table << "\n| metric | models | scale x7.3 median / max | rotation median / max | 1-to-4 subdivision median / max |\n"
+    table << "\n| metric | models | scale x7.3 median / max (model) | rotation median / max (model) | 1-to-4 subdivision "
+             "median / max (model) |\n"
           << "|---|---:|---:|---:|---:|\n";
     for(std::size_t k = 0; k < o.metrics.size(); ++k)
     {
       table << "| " << o.metrics[k] << " | " << invariance[3 * k].size();
       for(int v = 0; v < 3; ++v)
       {
-        std::vector<double> x = invariance[3 * k + v];
-        std::sort(x.begin(), x.end());
-        std::snprintf(buf, sizeof buf, " | %.2g / %.2g", x[x.size() / 2], x.back());
+        const std::vector<double>& x = invariance[3 * k + v];
+        std::vector<double> sorted = x;
+        std::sort(sorted.begin(), sorted.end());
+        const std::size_t worst = std::size_t(std::max_element(x.begin(), x.end()) - x.begin());
+        std::snprintf(buf, sizeof buf, " | %.2g / %.2g (%s)", sorted[sorted.size() / 2], sorted.back(),
+                      ids[worst].c_str());
         table << buf;
       }
       table << " |\n";
