@@ -121,7 +121,12 @@
 /// <tr><td>`metric`</td><td>a model of `DualEdgeWeight`</td>
 ///     <td>the weight of each dual edge</td>
 ///     <td>`Metrics::Part_aware_weight<>()`</td>
-///     <td>`face_distances()`, `k_way_segmentation()`, `spectral_embedding()`</td></tr>
+///     <td>`face_distances()`, `k_way_segmentation()`, `spectral_embedding()`,
+///         `shape_descriptor()` (which also takes `Retrieval::Euclidean_distance`)</td></tr>
+/// <tr><td>`descriptor_options`</td><td>`Retrieval::Descriptor_options`</td>
+///     <td>bins, source faces and range of a shape descriptor</td>
+///     <td>64 bins, 32 sources, 4 mean distances</td>
+///     <td>`shape_descriptor()`</td></tr>
 /// <tr><td>`nearest_source_map`</td>
 ///     <td>a writable property map, key: face descriptor, value: `std::size_t`</td>
 ///     <td>receives, for each face, the position in the source range of the
@@ -239,6 +244,23 @@
 /// how a metric separates the parts of a mesh.
 ///
 /// Header: `<SpectralSeg/Sampling/farthest_point_samples.h>`.
+
+/// \defgroup PkgSpectralSegRetrieval Shape retrieval
+/// \ingroup PkgSpectralSegRef
+/// \brief Shape descriptors from the distribution of distances between faces
+/// under a metric (part-aware, geodesic or Euclidean, thesis 3.6), their
+/// chi-square distance, rankings and retrieval scores (doc/retrieval.md).
+///
+/// Headers: `<SpectralSeg/shape_retrieval.h>` (mesh level),
+/// `<SpectralSeg/Retrieval/Shape_descriptor.h>` (dual-graph level).
+
+/// \defgroup PkgSpectralSegRegistration Registration of spectral embeddings
+/// \ingroup PkgSpectralSegRef
+/// \brief Rigid (or similarity) alignment of two spectral embeddings
+/// (`spectral_embedding()`) by closest points from every axis sign flip,
+/// for registration with a metric (thesis 3.6; doc/retrieval.md).
+///
+/// Header: `<SpectralSeg/Registration/align_embeddings.h>`.
 
 /// \defgroup PkgSpectralSegKWay k-way segmentation
 /// \ingroup PkgSpectralSegRef

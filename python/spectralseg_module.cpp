@@ -24,6 +24,7 @@
 #ifdef SPECTRALSEG_HAS_EMBREE
 #include <SpectralSeg/Ray_casting/Embree_ray_caster.h>
 #endif
+#include <SpectralSeg/Retrieval/Shape_descriptor.h>
 #include <SpectralSeg/automatic_segmentation.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/segment_hybrid.h>
@@ -864,6 +865,86 @@ py::tuple read_mesh(const std::string& path)
 
 } // namespace
 
+// ---------------------------------------------------------------------------
+// Shape retrieval (thesis 3.6): descriptors as dicts, chi-square, ranking.
+
+py::dict descriptor_dict(const SpectralSeg::Retrieval::Shape_descriptor& d)
+{
+  py::dict out;
+  out["metric"] = d.metric;
+  out["histogram"] = values_array(d.histogram);
+  out["range"] = d.range;
+  out["mean_distance"] = d.mean_distance;
+  out["sources"] = d.sources;
+  return out;
+}
+
+SpectralSeg::Retrieval::Shape_descriptor descriptor_of_dict(const py::object& o)
+{
+  if(!py::isinstance<py::dict>(o))
+    invalid("a descriptor must be a dict returned by shape_descriptor()");
+  const py::dict d = o.cast<py::dict>();
+  for(const char* key : {"metric", "histogram", "range"})
+    if(!d.contains(key))
+      invalid(std::string("a descriptor needs the key '") + key + "' (as returned by shape_descriptor())");
+  SpectralSeg::Retrieval::Shape_descriptor r;
+  r.metric = py::cast<std::string>(d["metric"]);
+  r.histogram = py::cast<std::vector<double>>(py::module_::import("numpy").attr("asarray")(d["histogram"], "float64").attr("tolist")());
+  r.range = py::cast<double>(d["range"]);
+  return r;
+}
+
+py::dict shape_descriptor(const py::object& vertices, const py::object& faces, const std::string& metric,
+                          const std::vector<double>& weights, const std::string& normalization, double vsi_fraction,
+                          const py::object& ray_caster, long long bins, long long sources, double range,
+                          long long threads, const py::object& progress, bool connect_touching_parts,
+                          double contact_distance, double speck_area_fraction)
+{
+  const Soup soup = soup_from_arrays(vertices, faces);
+  const Graph_options go = graph_options(connect_touching_parts, contact_distance, speck_area_fraction);
+  const std::string name = one_of("metric", metric, {"part-aware", "geodesic", "euclidean"});
+  if(weights.size() != 3)
+    invalid("weights must hold 3 coefficients (geodesic, angular, vsi)");
+  if(name != "part-aware" && (weights != std::vector<double>{0.02, 0., 0.98} || normalization != "p99" ||
+                              vsi_fraction != 0.01 || !ray_caster.is_none()))
+    invalid("weights, normalization, vsi_fraction and ray_caster apply to metric 'part-aware', not '" + name + "'");
+  const Metric_options mo = metric_options(name == "euclidean" ? "geodesic" : name, weights, normalization,
+                                           vsi_fraction, ray_caster);
+  SpectralSeg::Retrieval::Descriptor_options options;
+  options.bins = count("bins", bins, 2, 100000);
+  options.sources = count("sources", sources, 1, 100000);
+  options.range = number("range", range, 1e-3, 1e3);
+  const unsigned t = static_cast<unsigned>(count("threads", threads, 0, 4096));
+  Progress_bridge bridge(progress);
+  const SpectralSeg::Retrieval::Shape_descriptor d = run_without_gil(bridge, t, [&](const SpectralSeg::Execution& exec) {
+    const Input_mesh m(soup, go);
+    if(name == "euclidean")
+      return SpectralSeg::Retrieval::shape_descriptor(m.graph, SpectralSeg::Retrieval::Euclidean_distance(), options, exec);
+    const SpectralSeg::Metrics::Any_weight w = make_metric(mo);
+    exec.report(w.name() + " weights", 0.);
+    const SpectralSeg::Weighted_dual_graph weighted(m.graph, w(m.graph, exec));
+    exec.report(w.name() + " weights", 1.);
+    return SpectralSeg::Retrieval::shape_descriptor(weighted, w.name(), options, exec);
+  });
+  return descriptor_dict(d);
+}
+
+double chi_square_distance(const py::object& a, const py::object& b)
+{
+  return SpectralSeg::Retrieval::chi_square_distance(descriptor_of_dict(a), descriptor_of_dict(b));
+}
+
+py::list rank_shapes(const py::object& query, const py::iterable& database)
+{
+  std::vector<SpectralSeg::Retrieval::Shape_descriptor> db;
+  for(const py::handle& h : database)
+    db.push_back(descriptor_of_dict(py::reinterpret_borrow<py::object>(h)));
+  py::list out;
+  for(const SpectralSeg::Retrieval::Ranked_shape& r : SpectralSeg::Retrieval::rank_shapes(descriptor_of_dict(query), db))
+    out.append(py::make_tuple(r.index, r.distance));
+  return out;
+}
+
 PYBIND11_MODULE(spectralseg, m)
 {
   m.doc() = R"doc(Part-aware spectral segmentation of triangle meshes (SpectralSeg).
@@ -1049,4 +1130,36 @@ face's nearest source (-1 if none).
 Keyword arguments: metric, weights, normalization, vsi_fraction, ray_caster,
 threads, progress, connect_touching_parts, contact_distance and
 speck_area_fraction, as for k_way_segmentation().)doc");
+
+  m.def("shape_descriptor", &shape_descriptor, py::arg("vertices"), py::arg("faces"), py::kw_only(),
+        py::arg("metric") = "part-aware", py::arg("weights") = std::vector<double>{0.02, 0., 0.98},
+        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01, py::arg("ray_caster") = py::none(),
+        py::arg("bins") = 64, py::arg("sources") = 32, py::arg("range") = 4.0, py::arg("threads") = 0,
+        py::arg("progress") = py::none(), py::arg("connect_touching_parts") = true,
+        py::arg("contact_distance") = 0.005, py::arg("speck_area_fraction") = 0.01,
+        R"doc(shape_descriptor(vertices, faces, **options) -> dict
+
+Shape descriptor for retrieval (SpectralSeg::shape_descriptor(),
+`spectralseg descriptor`): the distribution of the distances between faces
+under `metric` ('part-aware', 'geodesic', or 'euclidean' for D2), each face
+weighted by its area, distances divided by their mean. Returns a dict with
+'metric', 'histogram' (float64, adds up to 1), 'range' (in mean distances),
+'mean_distance' and 'sources'.
+
+Keyword arguments: weights (the part-aware coefficients, by default the
+thesis's for retrieval 0.02, 0, 0.98), normalization, vsi_fraction and
+ray_caster (part-aware only), bins, sources (farthest-point source faces),
+range, threads, progress, connect_touching_parts, contact_distance,
+speck_area_fraction.)doc");
+  m.def("chi_square_distance", &chi_square_distance, py::arg("a"), py::arg("b"),
+        R"doc(chi_square_distance(a, b) -> float
+
+Chi-square distance between two descriptors of shape_descriptor(): 0 for
+equal histograms, at most 1, symmetric. Raises spectralseg.Error for
+descriptors of different metrics or bins.)doc");
+  m.def("rank_shapes", &rank_shapes, py::arg("query"), py::arg("database"),
+        R"doc(rank_shapes(query, database) -> [(index, distance), ...]
+
+The descriptors of `database` ranked by chi-square distance to `query`,
+nearest first; equal distances keep the database order.)doc");
 }

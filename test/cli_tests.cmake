@@ -137,6 +137,25 @@ run_cli(2 "metric" distance ${DATA}/elephant.off --from 0 --metric nonsense --fi
 run_cli(0 "png:" distance ${DATA}/elephant.off --from 0 --metric angular --field ${WORK}/el.txt --png ${WORK}/el.png)
 expect_files(distance el.png)
 
+# descriptor and rank (shape retrieval, thesis 3.6)
+run_cli_json(metric part-aware descriptor ${DATA}/elephant.off --output - -q)
+run_cli_json(bins 16 descriptor ${DATA}/elephant.off --metric euclidean --bins 16 --output - -q)
+run_cli(0 "descriptor:" descriptor ${DATA}/elephant.off --metric geodesic --output ${WORK}/el_descriptor.json -q)
+expect_files(descriptor el_descriptor.json)
+run_cli(2 "--weights cannot be used here: it applies to --metric part-aware, not euclidean"
+        descriptor ${DATA}/elephant.off --metric euclidean --weights 1,0,0 --output ${WORK}/refused.json)
+run_cli(2 "metric" descriptor ${DATA}/elephant.off --metric angular --output ${WORK}/refused.json)
+run_cli(2 "bins" descriptor ${DATA}/elephant.off --bins 1 --output ${WORK}/refused.json)
+expect_absent("a refused descriptor" refused.json)
+file(MAKE_DIRECTORY ${WORK}/rank_db ${WORK}/rank_empty)
+file(COPY ${DATA}/human_man.off ${DATA}/elephant.off DESTINATION ${WORK}/rank_db)
+file(RENAME ${WORK}/rank_db/elephant.off ${WORK}/rank_db/zz_elephant_copy.off)
+run_cli(0 "rank\tchi_square\tmesh\n1\t0\t[^\n]*zz_elephant_copy.off\n2\t[0-9.e-]+\t[^\n]*human_man.off"
+        rank ${DATA}/elephant.off ${WORK}/rank_db --metric euclidean -q)
+run_cli_without(0 "human_man" rank ${DATA}/elephant.off ${WORK}/rank_db --top 1 -q)
+run_cli(1 "no mesh file" rank ${DATA}/elephant.off ${WORK}/rank_empty -q)
+run_cli(1 "is not a folder" rank ${DATA}/elephant.off ${WORK}/no_such_folder -q)
+
 # segment and eval
 run_cli(0 "segments: 4" segment ${DATA}/elephant.off --k 4 --labels ${WORK}/el.seg --mesh ${WORK}/el.ply --png ${WORK}/el_seg.png --json ${WORK}/el.json -q)
 expect_files(segment el.seg el.ply el_seg.png el.json)

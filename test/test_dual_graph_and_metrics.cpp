@@ -1,9 +1,12 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Dual graph, metric policies, Dijkstra distances and named parameters.
+// Dual graph, metric policies, Dijkstra distances and named parameters;
+// shape descriptors for retrieval (thesis 3.6).
 #include "test_meshes.h"
+#include "../benchmark/subdivide.h"
 
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/IO/write_colored_mesh.h>
 #include <SpectralSeg/IO/write_segment_parts.h>
 #include <SpectralSeg/IO/write_segmented_mesh.h>
@@ -15,14 +18,19 @@
 #include <SpectralSeg/Metrics/Per_edge_weight.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/face_distances.h>
+#include <SpectralSeg/Registration/align_embeddings.h>
+#include <SpectralSeg/shape_retrieval.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+
+#include <Eigen/Geometry>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -569,4 +577,200 @@ TEST_CASE("write_segmented_mesh: PLY vertices copied per segment, labels, binary
   CHECK_THROWS_AS(IO::write_segment_parts(ply, mesh, segment), Io_error); // a file, not a directory
   CHECK(!std::filesystem::exists(dir + "/m.stl"));
   std::filesystem::remove_all(dir);
+}
+
+namespace {
+// The soup moved by x -> s R x + t, R a rotation of 37 degrees about (1, 2, 3).
+test_meshes::Soup similar(const test_meshes::Soup& in, double scale)
+{
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(37. * pi / 180., Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  test_meshes::Soup out = in;
+  for(auto& p : out.points)
+  {
+    const Eigen::Vector3d q = scale * (r * Eigen::Vector3d(p[0], p[1], p[2])) + Eigen::Vector3d(0.3, -2., 5.);
+    p = {q.x(), q.y(), q.z()};
+  }
+  return out;
+}
+
+Retrieval::Shape_descriptor describe(const Mesh& m, const std::string& metric, unsigned threads = 1)
+{
+  namespace P = SpectralSeg::parameters;
+  const auto np = P::number_of_threads(threads);
+  if(metric == "part-aware")
+    return shape_descriptor(m, np.metric(Retrieval::retrieval_metric<Ray_casting::AABB_ray_caster>()));
+  if(metric == "geodesic")
+    return shape_descriptor(m, np.metric(Metrics::Geodesic_weight()));
+  return shape_descriptor(m, np.metric(Retrieval::Euclidean_distance()));
+}
+} // namespace
+
+TEST_CASE("shape descriptor: a distribution; chi-square is 0 on itself, symmetric, at most 1", "[retrieval]")
+{
+  const Mesh star = test_meshes::to_mesh<Mesh>(test_meshes::star(1));
+  const Mesh t = test_meshes::to_mesh<Mesh>(test_meshes::t_shape(1));
+  for(const std::string metric : {"part-aware", "geodesic", "euclidean"})
+  {
+    INFO(metric);
+    const Retrieval::Shape_descriptor a = describe(star, metric), b = describe(t, metric);
+    CHECK(a.metric == metric);
+    CHECK(a.histogram.size() == 64);
+    CHECK(a.mean_distance > 0.);
+    double sum = 0.;
+    for(double v : a.histogram)
+    {
+      CHECK(v >= 0.);
+      sum += v;
+    }
+    CHECK(sum == Approx(1.).epsilon(1e-12));
+    CHECK(Retrieval::chi_square_distance(a, a) == 0.);
+    CHECK(Retrieval::chi_square_distance(a, b) == Retrieval::chi_square_distance(b, a));
+    CHECK(Retrieval::chi_square_distance(a, b) > 0.);
+    CHECK(Retrieval::chi_square_distance(a, b) <= 1.);
+  }
+  // geodesic: the mean distance between faces of the T is of the order of its size
+  const Retrieval::Shape_descriptor g = describe(t, "geodesic");
+  CHECK(g.mean_distance > 2.);
+  CHECK(g.mean_distance < 12.);
+  // descriptors of different metrics or bins are not comparable
+  Retrieval::Shape_descriptor other = g;
+  other.metric = "euclidean";
+  CHECK_THROWS_AS(Retrieval::chi_square_distance(g, other), Invalid_input);
+  other = g;
+  other.histogram.pop_back();
+  CHECK_THROWS_AS(Retrieval::chi_square_distance(g, other), Invalid_input);
+  Retrieval::Descriptor_options bad;
+  bad.bins = 1;
+  CHECK_THROWS_AS(shape_descriptor(t, SpectralSeg::parameters::descriptor_options(bad).metric(Metrics::Geodesic_weight())),
+                  Invalid_input);
+}
+
+TEST_CASE("shape descriptor: independent of scale, rotation, threads; close under 1-to-4 subdivision", "[retrieval][invariance]")
+{
+  // a real mesh: the voxel shapes have exact ties between distances, which
+  // rounding after a rotation breaks differently (other farthest-point sources)
+  Mesh m;
+  IO::read_mesh_file(SPECTRALSEG_SOURCE_DIR "/data/elephant.off", m);
+  test_meshes::Soup soup;
+  for(auto v : m.vertices())
+    soup.points.push_back({m.point(v).x(), m.point(v).y(), m.point(v).z()});
+  for(auto f : m.faces())
+  {
+    std::vector<std::size_t> t;
+    for(auto v : vertices_around_face(m.halfedge(f), m))
+      t.push_back(std::size_t(v));
+    soup.faces.push_back(t);
+  }
+  const Mesh moved = test_meshes::to_mesh<Mesh>(similar(soup, 7.3));
+  const Mesh finer = spectralseg_bench::midpoint_subdivision(m);
+  for(const std::string metric : {"part-aware", "geodesic", "euclidean"})
+  {
+    INFO(metric);
+    const Retrieval::Shape_descriptor d = describe(m, metric);
+    // exactly the same sums whatever the number of threads
+    const Retrieval::Shape_descriptor d2 = describe(m, metric, 2);
+    CHECK(d2.histogram == d.histogram);
+    CHECK(d2.mean_distance == d.mean_distance);
+    // scale and rotation: float rounding for the surface metrics; the
+    // part-aware metric's shape images use fixed ray directions, so a
+    // rotation moves some reaches (measured 0.004; doc/retrieval.md)
+    const double similar_tolerance = metric == "part-aware" ? 0.02 : 1e-9;
+    CHECK(Retrieval::chi_square_distance(d, describe(moved, metric)) < similar_tolerance);
+    // subdivision: other faces, other sources; the part-aware metric's edge
+    // weights also change with the resolution (measured 0.007, 0.0003)
+    CHECK(Retrieval::chi_square_distance(d, describe(finer, metric)) < (metric == "part-aware" ? 0.03 : 0.003));
+  }
+}
+
+TEST_CASE("ranking: a moved, subdivided copy of the query comes first", "[retrieval][ranking]")
+{
+  const test_meshes::Soup star = test_meshes::star(1);
+  const std::vector<Mesh> database{test_meshes::to_mesh<Mesh>(test_meshes::t_shape(1)),
+                                   test_meshes::to_mesh<Mesh>(test_meshes::welded(test_meshes::box(4., 1., 1., 4))),
+                                   spectralseg_bench::midpoint_subdivision(test_meshes::to_mesh<Mesh>(similar(star, 0.2))),
+                                   test_meshes::to_mesh<Mesh>(test_meshes::sphere(1., 12, 24))};
+  const Mesh query = test_meshes::to_mesh<Mesh>(star);
+  for(const std::string metric : {"part-aware", "geodesic", "euclidean"})
+  {
+    INFO(metric);
+    std::vector<Retrieval::Shape_descriptor> d;
+    for(const Mesh& m : database)
+      d.push_back(describe(m, metric));
+    const std::vector<Retrieval::Ranked_shape> r = Retrieval::rank_shapes(describe(query, metric), d);
+    REQUIRE(r.size() == database.size());
+    CHECK(r[0].index == 2);
+    for(std::size_t i = 1; i < r.size(); ++i)
+      CHECK(r[i - 1].distance <= r[i].distance);
+  }
+}
+
+TEST_CASE("retrieval scores: nearest neighbour, first and second tier", "[retrieval][scores]")
+{
+  // classes a a b b b; distances: shape 0 finds 2 (b) then 1 (a); the b's find each other
+  const std::vector<std::string> c{"a", "a", "b", "b", "b"};
+  std::vector<std::vector<double>> d(5, std::vector<double>(5, 1.));
+  auto set = [&](std::size_t i, std::size_t j, double v) { d[i][j] = d[j][i] = v; };
+  set(0, 2, 0.1);
+  set(0, 1, 0.2);
+  set(2, 3, 0.1);
+  set(3, 4, 0.1);
+  set(2, 4, 0.1);
+  set(1, 3, 0.05);
+  const Retrieval::Retrieval_scores s = Retrieval::retrieval_scores(d, c);
+  CHECK(s.queries == 5);
+  // NN: 0 -> 2 (no), 1 -> 3 (no), 2 -> 0 (no, 0.1 ties with 3 and 4, smaller index first), 3 -> 1 (no), 4 -> 2 (yes)
+  CHECK(s.nearest_neighbor == Approx(1. / 5.));
+  // FT (top C-1): 0: {2} 0; 1: {3} 0; 2: {0,3} 1/2; 3: {1,2} 1/2; 4: {2,3} 1
+  CHECK(s.first_tier == Approx((0. + 0. + 0.5 + 0.5 + 1.) / 5.));
+  // ST (top 2(C-1)): 0: {2,1} 1; 1: {3,0} 1; 2: {0,3,4,1} 1; 3: {1,2,4,0} 1; 4: {2,3,...} 1
+  CHECK(s.second_tier == Approx(1.));
+  CHECK_THROWS_AS(Retrieval::retrieval_scores(d, std::vector<std::string>(4, "a")), Invalid_input);
+}
+
+TEST_CASE("align_embeddings: recovers a rotation and sign flips, with or without correspondences", "[registration]")
+{
+  // a scattered anisotropic cloud (no symmetry), rows shuffled, one axis
+  // flipped, rotated and moved
+  const Eigen::Index n = 200;
+  Eigen::MatrixXd a(n, 3);
+  std::uint32_t state = 12345;
+  auto uniform = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  };
+  for(Eigen::Index i = 0; i < n; ++i)
+    a.row(i) << 3. * uniform(), 2. * uniform(), uniform();
+  for(const double angle : {0.1, 1.2})
+  {
+    INFO(angle);
+    const Eigen::Matrix3d r = Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+    Eigen::MatrixXd b(n, 3), b_same_rows(n, 3);
+    for(Eigen::Index i = 0; i < n; ++i)
+    {
+      Eigen::Vector3d p = a.row((i * 7) % n).transpose();
+      p.y() = -p.y();
+      b.row(i) = (r * p + Eigen::Vector3d(0.2, -0.1, 0.4)).transpose();
+    }
+    for(Eigen::Index i = 0; i < n; ++i)
+      b_same_rows.row((i * 7) % n) = b.row(i);
+    // known pairs: exact whatever the rotation
+    Registration::Alignment_options known;
+    known.rows_correspond = true;
+    const Registration::Embedding_alignment k = Registration::align_embeddings(b_same_rows, a, known);
+    CHECK(k.rms_closest < 1e-9);
+    CHECK(k.sign_flips != 0);
+    CHECK((k.aligned - a).norm() < 1e-9);
+    // closest points: from the right flip, a small rotation is recovered exactly
+    if(angle < 0.5)
+    {
+      const Registration::Embedding_alignment c = Registration::align_embeddings(b, a);
+      CHECK(c.rms_closest < 1e-9);
+      for(Eigen::Index i = 0; i < n; ++i)
+        CHECK((c.aligned.row(i) - a.row((i * 7) % n)).norm() < 1e-9);
+    }
+  }
+  CHECK_THROWS_AS(Registration::align_embeddings(a, Eigen::MatrixXd(n, 2)), Invalid_input);
+  Registration::Alignment_options known;
+  known.rows_correspond = true;
+  CHECK_THROWS_AS(Registration::align_embeddings(a, Eigen::MatrixXd(n - 1, 3), known), Invalid_input);
 }

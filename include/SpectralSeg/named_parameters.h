@@ -43,7 +43,8 @@ namespace internal_np {
   P(number_of_parts_t, number_of_parts) \
   P(connect_touching_parts_t, connect_touching_parts) \
   P(contact_distance_t, contact_distance) \
-  P(speck_area_fraction_t, speck_area_fraction)
+  P(speck_area_fraction_t, speck_area_fraction) \
+  P(descriptor_options_t, descriptor_options)
 
 #define SPECTRALSEG_DECLARE_TAG(X, Y) enum X { Y };
 SPECTRALSEG_NAMED_PARAMETERS(SPECTRALSEG_DECLARE_TAG)

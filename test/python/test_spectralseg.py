@@ -186,6 +186,43 @@ class Distances(unittest.TestCase):
         np.testing.assert_array_equal(d[nearest == 0], one[nearest == 0])
 
 
+class Retrieval(unittest.TestCase):
+    """Shape descriptors (thesis 3.6): invariance, chi-square, ranking, options."""
+
+    def test_descriptor_invariance_and_ranking(self):
+        v, f = Mesh.get()
+        angle = 0.7
+        r = np.array([[np.cos(angle), -np.sin(angle), 0], [np.sin(angle), np.cos(angle), 0], [0, 0, 1]])
+        moved = 3.5 * v @ r.T + np.array([1.0, -2.0, 0.5])
+        other_v, other_f = spectralseg.read_mesh(HUMAN)
+        for metric in ("part-aware", "geodesic", "euclidean"):
+            a = spectralseg.shape_descriptor(v, f, metric=metric, threads=1)
+            self.assertEqual(a["metric"], metric)
+            self.assertAlmostEqual(float(a["histogram"].sum()), 1.0, places=12)
+            b = spectralseg.shape_descriptor(moved, f, metric=metric, threads=2)
+            tolerance = 0.02 if metric == "part-aware" else 1e-9
+            self.assertLess(spectralseg.chi_square_distance(a, b), tolerance, metric)
+            self.assertEqual(spectralseg.chi_square_distance(a, a), 0.0)
+            c = spectralseg.shape_descriptor(other_v, other_f, metric=metric)
+            self.assertEqual(spectralseg.chi_square_distance(a, c), spectralseg.chi_square_distance(c, a))
+            ranking = spectralseg.rank_shapes(a, [c, b])
+            self.assertEqual(ranking[0][0], 1, metric)
+            self.assertLessEqual(ranking[0][1], ranking[1][1])
+
+    def test_descriptor_options_are_checked(self):
+        v, f = Mesh.get()
+        with self.assertRaises(spectralseg.Error):
+            spectralseg.shape_descriptor(v, f, metric="angular")
+        with self.assertRaises(spectralseg.Error):
+            spectralseg.shape_descriptor(v, f, metric="euclidean", weights=[0.5, 0, 0.5])
+        with self.assertRaises(spectralseg.Error):
+            spectralseg.shape_descriptor(v, f, bins=1)
+        a = spectralseg.shape_descriptor(v, f, metric="geodesic", bins=32)
+        b = spectralseg.shape_descriptor(v, f, metric="euclidean", bins=32)
+        with self.assertRaises(spectralseg.Error):
+            spectralseg.chi_square_distance(a, b)
+
+
 @unittest.skipUnless(CLI and os.path.exists(CLI), "SPECTRALSEG_CLI not set: no command-line tool to compare with")
 class SameAsCommandLine(unittest.TestCase):
     """Labels equal, line for line, the labels file of `spectralseg segment` with the same options."""

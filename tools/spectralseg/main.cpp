@@ -6,6 +6,7 @@
 #include "command_eval.h"
 #include "command_info.h"
 #include "command_render.h"
+#include "command_retrieval.h"
 #include "command_segment.h"
 #include "Argument_checks.h"
 
@@ -90,6 +91,10 @@ int main(int argc, char** argv)
   Batch_options batch;
   Batch_merge_options batch_merge;
   add_batch_commands(app, batch, batch_merge);
+  Descriptor_command_options descriptor;
+  add_descriptor_command(app, descriptor);
+  Rank_command_options rank;
+  add_rank_command(app, rank);
 
   try
   {
@@ -124,6 +129,10 @@ int main(int argc, char** argv)
       return finish(run_batch(batch, out));
     if(app.got_subcommand("batch-merge"))
       return finish(run_batch_merge(batch_merge, out));
+    if(app.got_subcommand("descriptor"))
+      return finish(run_descriptor(descriptor, out));
+    if(app.got_subcommand("rank"))
+      return finish(run_rank(rank, out));
   }
   catch(const Usage_error& e)
   {
