@@ -13,6 +13,7 @@
 #include <SpectralSeg/IO/internal/read_polygon_soup.h>
 #include <SpectralSeg/IO/triangle_soup_to_mesh.h>
 #include <SpectralSeg/IO/write_face_values.h>
+#include <SpectralSeg/Kernels/Any_kernel.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/Metrics/Angular_weight.h>
@@ -393,6 +394,15 @@ struct K_way_settings
   SpectralSeg::K_way_options options;
 };
 
+// 'exponential' or 'gaussian' (checked by k_way_settings()), behind one type:
+// the methods are compiled once for both
+SpectralSeg::Kernels::Any_kernel chosen_kernel(const std::string& name)
+{
+  if(name == "gaussian")
+    return SpectralSeg::Kernels::Gaussian_kernel();
+  return SpectralSeg::Kernels::Exponential_kernel();
+}
+
 K_way_settings k_way_settings(const std::string& kernel, const std::string& sampling, long long samples, long long seed,
                               bool boundary_enhancement, long long extra_clusters)
 {
@@ -585,9 +595,7 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
     o.metric = w.name();
     const SpectralSeg::Weighted_dual_graph weighted(o.m->graph, w(o.m->graph, exec));
     timer.lap("metric");
-    o.r = ks.kernel == "gaussian"
-            ? SpectralSeg::segment_k_way(weighted, kk, ks.options.with_kernel(SpectralSeg::Kernels::Gaussian_kernel()), exec)
-            : SpectralSeg::segment_k_way(weighted, kk, ks.options, exec);
+    o.r = SpectralSeg::segment_k_way(weighted, kk, ks.options.with_kernel(chosen_kernel(ks.kernel)), exec);
     o.timings = timer.timings;
     o.timings.insert(o.timings.end(), o.r.timings.begin(), o.r.timings.end());
     o.threads = exec.threads();
@@ -749,7 +757,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
       }
       return SpectralSeg::segment_k_way_automatic(weighted, automatic, exec);
     };
-    o.r = ks.kernel == "gaussian" ? run(SpectralSeg::Kernels::Gaussian_kernel()) : run(SpectralSeg::Kernels::Exponential_kernel());
+    o.r = run(chosen_kernel(ks.kernel));
     o.labels = o.r.labels;
     o.timings = timer.timings;
     o.timings.insert(o.timings.end(), o.r.timings.begin(), o.r.timings.end());

@@ -5,6 +5,7 @@
 #include "test_meshes.h"
 
 #include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
+#include <SpectralSeg/Kernels/Any_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Refinement/graph_cut_boost_backends.h>
@@ -279,9 +280,26 @@ TEST_CASE("exact and Nyström embeddings give the same segmentation", "[k_way][n
   const K_way_result exact = segment_k_way(s.weighted, 5, with_method(Embedding::Method::exact));
   const K_way_result nystrom = segment_k_way(s.weighted, 5, with_method(Embedding::Method::nystrom));
   CHECK(Evaluation::rand_index_error(exact.labels, nystrom.labels) < 0.03);
-  // the Gaussian kernel finds the parts too
-  const K_way_result gaussian = segment_k_way(s.weighted, 5, with_method(Embedding::Method::nystrom).with_kernel(Kernels::Gaussian_kernel()));
+  // the Gaussian kernel finds the parts too (chosen at run time, as the tool does)
+  const K_way_result gaussian =
+    segment_k_way(s.weighted, 5, with_method(Embedding::Method::nystrom).with_kernel(Kernels::Any_kernel(Kernels::Gaussian_kernel())));
   CHECK(Evaluation::rand_index_error(gaussian.labels, s.soup.face_part) < 0.05);
+}
+
+TEST_CASE("Any_kernel gives the affinities of the kernel it holds", "[k_way][kernel]")
+{
+  const Star& s = star();
+  const std::vector<Dual_graph::size_type> samples{0, 7, 19};
+  const Kernels::Any_kernel any{Kernels::Gaussian_kernel()};
+  CHECK(any.name() == "gaussian");
+  CHECK(any.width(2.5) == Kernels::Gaussian_kernel().width(2.5));
+  CHECK(Kernels::Any_kernel(Kernels::Exponential_kernel()).width(2.5) == Kernels::Exponential_kernel().width(2.5));
+  Embedding::internal::Row_matrix held = s.weighted.distance_rows(samples);
+  Embedding::internal::Row_matrix wrapped = held;
+  Embedding::internal::distances_to_affinities(held, Kernels::Gaussian_kernel(), Execution());
+  Embedding::internal::distances_to_affinities(wrapped, any, Execution());
+  CHECK(wrapped == held); // bit for bit
+  CHECK(held.minCoeff() < 0.5); // not all 1: the comparison has something to compare
 }
 
 TEST_CASE("Gamma ranks a farthest-point sample set above a clustered one", "[nystrom][gamma]")

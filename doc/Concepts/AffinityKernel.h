@@ -36,6 +36,7 @@
 ///   \f$e^{-G / (2\sigma^2)}\f$ with \f$\sigma = \sqrt{\bar G}\f$
 /// - `SpectralSeg::Kernels::Gaussian_kernel`:
 ///   \f$e^{-G^2 / (2\sigma^2)}\f$ with \f$\sigma = \bar G\f$
+/// - `SpectralSeg::Kernels::Any_kernel`: any of them, chosen at run time
 class AffinityKernel
 {
 public:

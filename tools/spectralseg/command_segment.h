@@ -13,6 +13,7 @@
 
 #include <SpectralSeg/IO/write_face_values.h>
 #include <SpectralSeg/Rendering/render_mesh_geometry.h>
+#include <SpectralSeg/Kernels/Any_kernel.h>
 #include <SpectralSeg/Kernels/Exponential_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/Refinement/graph_cut_boost_backends.h> // --graph-cut-backend boost-csr, boost-list
@@ -368,8 +369,10 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, automatic, exec)
                   : SpectralSeg::segment_k_way(weighted, k, automatic.k_way, exec);
   };
+  // one instantiation of the methods for both kernels
   const SpectralSeg::K_way_result r =
-    o.kernel == "gaussian" ? run(SpectralSeg::Kernels::Gaussian_kernel()) : run(SpectralSeg::Kernels::Exponential_kernel());
+    run(o.kernel == "gaussian" ? SpectralSeg::Kernels::Any_kernel(SpectralSeg::Kernels::Gaussian_kernel())
+                               : SpectralSeg::Kernels::Any_kernel(SpectralSeg::Kernels::Exponential_kernel()));
   for(const auto& t : r.timings)
     timings.push_back(t);
   t0 = clock::now();
