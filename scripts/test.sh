@@ -12,6 +12,7 @@ bash scripts/build.sh
 # below (its stricter configuration; about 5 minutes per CGAL version, and CI
 # has 30 minutes): `cd build && ctest -R header_self_containment` runs it
 # against CGAL 5.5
-(cd build && ctest --output-on-failure -E '^header_self_containment$')
+# two tests at a time (2 cores; each test works in a folder of its own)
+(cd build && ctest --output-on-failure -j 2 -E '^header_self_containment$')
 # the same headers against CGAL 6 (a subset of the tests: see the script)
 bash scripts/test_cgal6.sh
