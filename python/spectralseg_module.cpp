@@ -499,8 +499,10 @@ void add_segments(py::dict& d, const Input_mesh& m, const std::vector<int>& labe
   d["segment_list"] = list;
 }
 
-py::object labels_result(const Input_mesh& m, const std::vector<int>& labels, py::dict report, bool want_report)
+py::object labels_result(const Input_mesh& m, const std::vector<int>& mesh_labels, py::dict report, bool want_report)
 {
+  // segments numbered in the order of the input's faces
+  const std::vector<int> labels = SpectralSeg::IO::number_segments_in_input_order(m.report, mesh_labels);
   py::array_t<std::int64_t> out = labels_array(SpectralSeg::IO::values_in_input_order(m.report, labels, -1));
   if(!want_report)
     return std::move(out);

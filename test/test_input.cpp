@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <numeric>
 #include <random>
 #include <string>
 #include <utility>
@@ -189,6 +190,57 @@ TEST_CASE("a triangle soup from arrays is repaired as a file is", "[input]")
   CHECK_THROWS_WITH(IO::triangle_soup_to_mesh(points, outside, m), Catch::Contains("triangle 7 has vertex index"));
   CHECK_THROWS_WITH(IO::triangle_soup_to_mesh(points, {}, m), Catch::Contains("no face"));
   CHECK_THROWS_AS(IO::triangle_soup_to_mesh(points, {{0, 0, 1}}, m), Invalid_input);
+}
+
+TEST_CASE("the mesh is the same whatever the order of the vertices and faces", "[input]")
+{
+  // the elephant read from its file, then as a soup whose vertices, faces
+  // and face corners are shuffled: both give the same mesh, vertex for
+  // vertex and face for face, so everything after is the same too
+  Mesh a;
+  const IO::Mesh_file_report fr = IO::read_mesh_file(SPECTRALSEG_SOURCE_DIR "/data/elephant.off", a);
+  bool reordered = false;
+  for(std::size_t f = 0; f < fr.input_face_of_face.size(); ++f)
+    reordered = reordered || fr.input_face_of_face[f] != f;
+  CHECK(reordered); // the file is not in the mesh's order: the test means something
+  std::mt19937 random(7);
+  std::vector<std::size_t> vertex_of(num_vertices(a)), face_of(num_faces(a)); // shuffled -> a's
+  std::iota(vertex_of.begin(), vertex_of.end(), std::size_t(0));
+  std::iota(face_of.begin(), face_of.end(), std::size_t(0));
+  std::shuffle(vertex_of.begin(), vertex_of.end(), random);
+  std::shuffle(face_of.begin(), face_of.end(), random);
+  std::vector<std::size_t> shuffled_vertex(vertex_of.size());
+  std::vector<std::array<double, 3>> points(vertex_of.size());
+  for(std::size_t v = 0; v < vertex_of.size(); ++v)
+  {
+    shuffled_vertex[vertex_of[v]] = v;
+    const auto& p = a.point(Mesh::Vertex_index(Mesh::size_type(vertex_of[v])));
+    points[v] = {p.x(), p.y(), p.z()};
+  }
+  const auto corners = [](const Mesh& m, std::size_t f) {
+    std::vector<std::size_t> c;
+    for(auto v : vertices_around_face(halfedge(Mesh::Face_index(Mesh::size_type(f)), m), m))
+      c.push_back(std::size_t(v));
+    return c;
+  };
+  std::vector<std::array<std::size_t, 3>> triangles(face_of.size());
+  for(std::size_t t = 0; t < face_of.size(); ++t)
+  {
+    const std::vector<std::size_t> c = corners(a, face_of[t]);
+    const std::size_t r = random() % 3; // another first corner, same orientation
+    for(std::size_t i = 0; i < 3; ++i)
+      triangles[t][i] = shuffled_vertex[c[(i + r) % 3]];
+  }
+  Mesh b;
+  const IO::Mesh_file_report sr = IO::triangle_soup_to_mesh(points, triangles, b);
+  REQUIRE(num_vertices(b) == num_vertices(a));
+  REQUIRE(num_faces(b) == num_faces(a));
+  for(auto v : vertices(a))
+    REQUIRE(a.point(v) == b.point(v));
+  for(std::size_t f = 0; f < num_faces(a); ++f)
+    REQUIRE(corners(a, f) == corners(b, f));
+  for(std::size_t t = 0; t < face_of.size(); ++t)
+    REQUIRE(sr.face_of_input_face[t] == face_of[t]);
 }
 
 TEST_CASE("every shared test mesh is read and measured, or rejected with a message", "[input][shared]")

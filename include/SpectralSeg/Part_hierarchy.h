@@ -6,7 +6,7 @@
 #ifndef SPECTRALSEG_PART_HIERARCHY_H
 #define SPECTRALSEG_PART_HIERARCHY_H
 
-#include <SpectralSeg/Segmentability/segmentability.h>
+#include <SpectralSeg/Segmentability/Test.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <algorithm>

@@ -96,7 +96,13 @@ inline void write_mesh_outputs(const std::string& mesh, bool binary, const std::
   // labels are in the order of the mesh's face indices
   const auto segment_of = [&labels](Mesh::Face_index f) -> int { return labels[std::size_t(f)]; };
   const auto segments = boost::make_function_property_map<Mesh::Face_index, int>(segment_of);
-  const auto np = SpectralSeg::parameters::use_binary_mode(binary);
+  // faces and vertices in the file's order
+  const auto face_rank = boost::make_function_property_map<Mesh::Face_index, std::size_t>(
+    [&m](Mesh::Face_index f) { return m.face_rank[std::size_t(f)]; });
+  const auto vertex_rank = boost::make_function_property_map<Mesh::Vertex_index, std::size_t>(
+    [&m](Mesh::Vertex_index v) { return m.vertex_rank[std::size_t(v)]; });
+  const auto np =
+    SpectralSeg::parameters::use_binary_mode(binary).face_index_map(face_rank).vertex_index_map(vertex_rank);
   if(!mesh.empty())
   {
     SpectralSeg::IO::write_segmented_mesh(mesh, m.mesh, segments, np);

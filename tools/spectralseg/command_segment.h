@@ -198,7 +198,7 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
 // (with `--json -` the JSON report is all that goes to standard output: the
 // lines naming the files go to standard error, unless -q)
 template <typename Lap>
-int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const std::vector<int>& labels,
+int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const std::vector<int>& mesh_labels,
                           const SpectralSeg::Execution& exec, const std::string& metric, nlohmann::ordered_json& report,
                           const std::vector<std::pair<std::string, double>>& timings, Lap& lap,
                           std::chrono::steady_clock::time_point started, const Progress_printer& out)
@@ -210,6 +210,8 @@ int write_segment_outputs(const Segment_options& o, const Loaded_mesh& m, const 
     else
       std::cout << line << "\n";
   };
+  // segments numbered in the file's face order, in every output
+  const std::vector<int> labels = SpectralSeg::IO::number_segments_in_input_order(m.report, mesh_labels);
   const std::size_t n = labels.size();
   const std::size_t segments = labels.empty() ? 0 : std::size_t(*std::max_element(labels.begin(), labels.end()) + 1);
   SpectralSeg::IO::write_face_values(o.labels, SpectralSeg::IO::values_in_input_order(m.report, labels, -1));

@@ -5,6 +5,7 @@
 #ifndef SPECTRALSEG_IO_MESH_FILE_REPORT_H
 #define SPECTRALSEG_IO_MESH_FILE_REPORT_H
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -39,6 +40,23 @@ struct Mesh_file_report
   std::vector<std::size_t> face_of_input_face;
   /// for each mesh face, the face of the file it comes from
   std::vector<std::size_t> input_face_of_face;
+
+  /// for each mesh face, its position when the mesh faces are listed in
+  /// the file's order (the faces of one triangulated polygon one after
+  /// the other): the face order of outputs that follow the file, as a
+  /// face index map (the mesh itself stores its faces along a Hilbert curve)
+  std::vector<std::size_t> input_rank_of_faces() const
+  {
+    std::vector<std::size_t> faces(input_face_of_face.size());
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      faces[f] = f;
+    std::stable_sort(faces.begin(), faces.end(),
+                     [this](std::size_t a, std::size_t b) { return input_face_of_face[a] < input_face_of_face[b]; });
+    std::vector<std::size_t> rank(faces.size());
+    for(std::size_t i = 0; i < faces.size(); ++i)
+      rank[faces[i]] = i;
+    return rank;
+  }
 
   /// one sentence per repair made, for the user
   std::vector<std::string> warnings;

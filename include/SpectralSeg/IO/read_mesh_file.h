@@ -44,8 +44,7 @@ Mesh_file_report read_mesh_bytes(const File_bytes& file, const std::string& form
 /// Repairs, each counted in the report with a warning:
 /// - vertices with exactly the same coordinates are merged (STL files and
 ///   unwelded exports store each triangle's corners separately);
-/// - vertices that no kept face uses are left out of the mesh (the others
-///   keep the file's order);
+/// - vertices that no kept face uses are left out of the mesh;
 /// - faces with more than three vertices are triangulated (minimum-area
 ///   triangulation of the polygon);
 /// - faces with fewer than three distinct vertices are dropped;
@@ -71,6 +70,12 @@ Mesh_file_report read_mesh_bytes(const File_bytes& file, const std::string& form
 /// lists, whatever their types. The whole file is read into memory first;
 /// a path that is not a regular file (a directory, a device such as
 /// `/dev/zero`, a FIFO) is refused before it is opened.
+///
+/// The mesh stores its vertices and faces along Hilbert curves through
+/// their positions and centroids (CGAL's `hilbert_sort()`, ties broken by
+/// coordinates), not in the file's order: faces that are neighbours on the
+/// surface are neighbours in memory, so a file listing its faces in any
+/// order is processed as fast, and into the same mesh, as a well-ordered one.
 ///
 /// Degenerate (zero-area) faces are kept and reported: the library handles
 /// them (see `Mesh_geometry`). Open meshes and several connected components

@@ -9,6 +9,7 @@
 #include <SpectralSeg/IO/Mesh_file_report.h>
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
 #include <SpectralSeg/IO/internal/repair_polygon_soup.h>
+#include <SpectralSeg/IO/internal/spatial_order.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -60,7 +61,7 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
   const bool oriented_manifold = is_oriented_manifold_soup(soup.points.size(), clean.triangles);
   report.non_manifold_edges = oriented_manifold ? 0 : count_non_manifold_edges(clean.triangles);
 
-  // vertices no kept face uses are left out (the others keep their order):
+  // vertices no kept face uses are left out:
   // CGAL counts an isolated vertex as an invalid polygon mesh, and a stray
   // point would widen the bounding box that framing and scales are taken from
   std::vector<std::array<std::size_t, 3>>& triangles = clean.triangles;
@@ -84,6 +85,9 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
   if(!oriented_manifold)
     CGAL::Polygon_mesh_processing::orient_polygon_soup(points, triangles);
   report.split_vertices = points.size() - points_before;
+  // vertices and faces along Hilbert curves: neighbours in the mesh become
+  // neighbours in memory, and the file's order stops mattering
+  const std::vector<std::size_t> new_triangle = sort_along_hilbert_curve(points, triangles);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   if(num_faces(mesh) != triangles.size())
     throw Invalid_input(name + ": the faces could not be assembled into a mesh");
@@ -93,11 +97,13 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
   for(std::size_t p = 0; p < report.input_faces; ++p)
   {
     if(clean.first_triangle[p] != Mesh_file_report::no_face)
-      report.face_of_input_face[p] = clean.first_triangle[p];
+      report.face_of_input_face[p] = new_triangle[clean.first_triangle[p]];
     else if(clean.duplicate_of[p] != Mesh_file_report::no_face)
-      report.face_of_input_face[p] = clean.first_triangle[clean.duplicate_of[p]];
+      report.face_of_input_face[p] = new_triangle[clean.first_triangle[clean.duplicate_of[p]]];
   }
-  report.input_face_of_face = std::move(clean.input_face_of_triangle);
+  report.input_face_of_face.assign(triangles.size(), 0);
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    report.input_face_of_face[new_triangle[t]] = clean.input_face_of_triangle[t];
 
   report.closed = CGAL::is_closed(mesh);
   if(report.closed)
@@ -137,8 +143,9 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
 /// \tparam Point a CGAL point type
 /// \param points the vertex coordinates
 /// \param triangles three indices into `points` per triangle
-/// \param mesh receives the mesh (cleared first); its face `f` comes from
-///        triangle `report.input_face_of_face[f]`
+/// \param mesh receives the mesh (cleared first), its vertices and faces
+///        along Hilbert curves as in `read_mesh_file()`; its face `f` comes
+///        from triangle `report.input_face_of_face[f]`
 /// \throws Invalid_input if a coordinate is not finite, an index is not
 ///         below `points.size()`, there is no triangle, no usable triangle,
 ///         or more repeated triangles than distinct ones

@@ -9,6 +9,7 @@
 #include <SpectralSeg/IO/Mesh_file_report.h>
 #include <SpectralSeg/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -32,6 +33,40 @@ std::vector<T> values_in_input_order(const Mesh_file_report& report, const std::
     if(f != Mesh_file_report::no_face && f < per_mesh_face.size())
       out[p] = per_mesh_face[f];
   }
+  return out;
+}
+
+/// \ingroup PkgSpectralSegIO
+/// \brief Renumbers segment labels (one per mesh face) in the order in which
+/// the faces of the file that `report` describes first show them: label 0
+/// is the segment of the file's first face, label 1 the next segment met,
+/// and so on; negative labels (no segment) stay.
+///
+/// The reader stores the faces along a Hilbert curve, not in the file's
+/// order (`read_mesh_file()`), and the methods number segments in the
+/// mesh's order; after this the numbers are those a reader in file order
+/// would give, while the segments themselves do not depend on the order.
+/// The tool and the Python module number their labels this way.
+inline std::vector<int> number_segments_in_input_order(const Mesh_file_report& report,
+                                                       const std::vector<int>& per_mesh_face)
+{
+  int count = 0;
+  for(int l : per_mesh_face)
+    count = std::max(count, l + 1);
+  std::vector<int> number(std::size_t(count), -1);
+  int next = 0;
+  const auto meet = [&](std::size_t f) {
+    if(f < per_mesh_face.size() && per_mesh_face[f] >= 0 && number[std::size_t(per_mesh_face[f])] < 0)
+      number[std::size_t(per_mesh_face[f])] = next++;
+  };
+  for(const std::size_t f : report.face_of_input_face)
+    if(f != Mesh_file_report::no_face)
+      meet(f);
+  for(std::size_t f = 0; f < per_mesh_face.size(); ++f) // faces no file face maps to, if any
+    meet(f);
+  std::vector<int> out(per_mesh_face.size());
+  for(std::size_t f = 0; f < out.size(); ++f)
+    out[f] = per_mesh_face[f] < 0 ? per_mesh_face[f] : number[std::size_t(per_mesh_face[f])];
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include <SpectralSeg/Mesh_piece.h>
 #include <SpectralSeg/Segmentability/Contour_analysis.h>
+#include <SpectralSeg/Segmentability/Test.h>
 #include <SpectralSeg/Segmentability/convexity.h>
 #include <SpectralSeg/Segmentability/inner_distances.h>
 #include <SpectralSeg/Segmentability/integrated_bending_score.h>
@@ -23,25 +24,6 @@
 
 namespace SpectralSeg {
 namespace Segmentability {
-
-/// \ingroup PkgSpectralSegSegmentability
-/// \brief The four tests, in the order they are tried.
-enum class Test
-{
-  structure = 0,            ///< contour of the L projection
-  structure_normalized = 1, ///< the same contour re-embedded by MDS of its inner distances
-  geometry = 2,             ///< contour of the M projection
-  geometry_normalized = 3,  ///< the same contour re-embedded by MDS of its inner distances
-  none = 4                  ///< no test passed: the piece is a final part
-};
-
-/// \ingroup PkgSpectralSegSegmentability
-/// \brief The name of a test: `"L"`, `"L-MDS"`, `"M"`, `"M-MDS"` or `"none"`.
-inline std::string test_name(Test t)
-{
-  static const char* names[] = {"L", "L-MDS", "M", "M-MDS", "none"};
-  return names[static_cast<int>(t)];
-}
 
 /// \ingroup PkgSpectralSegSegmentability
 /// \brief Parameters of the segmentability test.

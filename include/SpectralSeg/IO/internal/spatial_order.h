@@ -1,0 +1,138 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The order along a Hilbert curve in which the readers store a mesh's
+// vertices and faces, whatever their order in the file.
+#ifndef SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
+#define SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
+
+#include <CGAL/hilbert_sort.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+namespace SpectralSeg {
+namespace IO {
+namespace internal {
+
+// CGAL's spatial-sorting traits on indices into an array of keys: the point
+// of index i is keys[i].position, compared along one axis with ties broken
+// by the other two axes and then by keys[i].tie. The comparisons are a
+// strict total order, so the median splits of CGAL::hilbert_sort() (which
+// shuffles first) put the same indices on each side whatever the order
+// they come in: the sorted sequence depends on the keys only.
+struct Spatial_order_key
+{
+  std::array<double, 3> position;
+  std::array<std::size_t, 3> tie;
+};
+
+class Spatial_order_traits
+{
+public:
+  typedef std::size_t Point_3;
+
+  explicit Spatial_order_traits(const std::vector<Spatial_order_key>& keys) : keys_(&keys) {}
+
+  template <int axis>
+  struct Less
+  {
+    const std::vector<Spatial_order_key>* keys;
+    bool operator()(std::size_t a, std::size_t b) const
+    {
+      const Spatial_order_key& p = (*keys)[a];
+      const Spatial_order_key& q = (*keys)[b];
+      for(int i = 0; i < 3; ++i)
+      {
+        const int c = (axis + i) % 3;
+        if(p.position[c] != q.position[c])
+          return p.position[c] < q.position[c];
+      }
+      return p.tie < q.tie;
+    }
+  };
+  typedef Less<0> Less_x_3;
+  typedef Less<1> Less_y_3;
+  typedef Less<2> Less_z_3;
+  Less_x_3 less_x_3_object() const { return Less_x_3{keys_}; }
+  Less_y_3 less_y_3_object() const { return Less_y_3{keys_}; }
+  Less_z_3 less_z_3_object() const { return Less_z_3{keys_}; }
+
+private:
+  const std::vector<Spatial_order_key>* keys_;
+};
+
+// The indices of `keys` in the order of a Hilbert curve through their
+// positions (CGAL's median policy: the curve adapts to where the points are).
+inline std::vector<std::size_t> hilbert_order(const std::vector<Spatial_order_key>& keys)
+{
+  std::vector<std::size_t> order(keys.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  CGAL::hilbert_sort(order.begin(), order.end(), Spatial_order_traits(keys), CGAL::Hilbert_sort_median_policy());
+  return order;
+}
+
+// Renumbers `points` and `triangles` in place along Hilbert curves: the
+// vertices by position, the triangles by centroid (ties by their vertices),
+// each triangle starting at its lowest vertex index (its orientation kept).
+// Returns the new index of each triangle. Vertices at the same position (the
+// copies that splitting a non-manifold vertex makes) keep their relative
+// order; everything else ends in an order that does not depend on the input
+// order, so that the memory access patterns of what follows, and its
+// results, do not either.
+template <typename Point>
+std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
+                                                  std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  std::vector<Spatial_order_key> keys(points.size());
+  for(std::size_t v = 0; v < points.size(); ++v)
+    keys[v] = {{{CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()), CGAL::to_double(points[v].z())}},
+               {{v, 0, 0}}};
+  const std::vector<std::size_t> vertex_order = hilbert_order(keys);
+  std::vector<std::size_t> new_vertex(points.size());
+  std::vector<Point> sorted_points;
+  sorted_points.reserve(points.size());
+  for(std::size_t i = 0; i < vertex_order.size(); ++i)
+  {
+    new_vertex[vertex_order[i]] = i;
+    sorted_points.push_back(points[vertex_order[i]]);
+  }
+  points.swap(sorted_points);
+
+  keys.assign(triangles.size(), Spatial_order_key());
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    std::array<std::size_t, 3>& tri = triangles[t];
+    for(std::size_t& v : tri)
+      v = new_vertex[v];
+    std::rotate(tri.begin(), std::min_element(tri.begin(), tri.end()), tri.end());
+    Spatial_order_key& k = keys[t];
+    k.position = {{0.0, 0.0, 0.0}};
+    for(const std::size_t v : tri)
+    {
+      k.position[0] += CGAL::to_double(points[v].x()) / 3;
+      k.position[1] += CGAL::to_double(points[v].y()) / 3;
+      k.position[2] += CGAL::to_double(points[v].z()) / 3;
+    }
+    k.tie = tri;
+  }
+  const std::vector<std::size_t> triangle_order = hilbert_order(keys);
+  std::vector<std::size_t> new_triangle(triangles.size());
+  std::vector<std::array<std::size_t, 3>> sorted_triangles;
+  sorted_triangles.reserve(triangles.size());
+  for(std::size_t i = 0; i < triangle_order.size(); ++i)
+  {
+    new_triangle[triangle_order[i]] = i;
+    sorted_triangles.push_back(triangles[triangle_order[i]]);
+  }
+  triangles.swap(sorted_triangles);
+  return new_triangle;
+}
+
+} // namespace internal
+} // namespace IO
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
