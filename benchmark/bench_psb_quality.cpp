@@ -41,7 +41,7 @@
 //                  no crease split); the options below change single settings
 //   --mu M         graph-cut smoothness (default 10; thesis 0.3)   --mean-edge | --longest-edge (thesis)
 //   --band B       graph-cut band width (default 0.4; 0: every face may move, the thesis)
-//   --crease-angle A  split clusters along closed concave creases of A degrees (default 30; 0: off)
+//   --crease-angle A  split clusters along closed concave creases of A degrees (default 30; 0: off), k-way and contrast
 //   --merge-size-exponent E  the merge's area factor exponent (default 0.1; 0: the strength alone)
 //   --merge-separation S     the scale of the merge's embedding-separation factor (default 2; 0: off)
 //   --merge-min-area-fraction F  segments under this fraction of the area are merged first (default 0.005)
@@ -333,6 +333,8 @@ std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g
     ho.min_boundary_contrast = o.auto_contrast;
   if(o.neck_scale >= 0.)
     ho.neck_scale = o.neck_scale;
+  if(o.crease_angle >= 0.)
+    ho.k_way.crease_angle = o.crease_angle;
   return SpectralSeg::segment_hybrid(wg, ho, exec).labels;
 }
 
