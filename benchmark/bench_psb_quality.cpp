@@ -12,7 +12,8 @@
 //   --methods kway,contrast,auto,salient,sdf methods to run (default kway): k-way with the humans' k,
 //                           the default automatic method (segment_hybrid: over-segment, merge by concave and
 //                           metric contrast), k-way choosing k by concavity (segment_k_way_automatic), the thesis's recursive salient
-//                           cuts (segment_automatically, ch. 6), CGAL's SDF segmentation (the peer)
+//                           cuts (segment_automatically, ch. 6), CGAL's SDF segmentation (the peer); cpc, seg_mat
+//                           and cgal_sdf score the peers' labels in PSB_DIR/peers/METHOD/ID.seg
 //   --eta E  --min-part-area F  --structure-only   parameters of the salient-cut method
 //   --salient-thesis        the salient-cut method as published (Automatic_segmentation_options::thesis())
 //                           instead of the improved default
@@ -22,6 +23,7 @@
 //                           min-salience=X, roots=0|1 (min-salience applies to a component's first cut)
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
+//   --labels-dir DIR        each result's labels, METHOD_ID.seg, one per face of the .off file
 //   --shard i/N             run only the models whose row number is i mod N
 //   --out FILE.tsv          per-model rows (default: stdout only)
 //   --alpha A --beta B --gamma C   part-aware coefficients
@@ -39,7 +41,7 @@
 //                  no crease split); the options below change single settings
 //   --mu M         graph-cut smoothness (default 10; thesis 0.3)   --mean-edge | --longest-edge (thesis)
 //   --band B       graph-cut band width (default 0.4; 0: every face may move, the thesis)
-//   --crease-angle A  split clusters along closed concave creases of A degrees (default 30; 0: off)
+//   --crease-angle A  split clusters along closed concave creases of A degrees (default 30; 0: off), k-way and contrast
 //   --merge-size-exponent E  the merge's area factor exponent (default 0.1; 0: the strength alone)
 //   --merge-separation S     the scale of the merge's embedding-separation factor (default 2; 0: off)
 //   --merge-min-area-fraction F  segments under this fraction of the area are merged first (default 0.005)
@@ -116,6 +118,7 @@ struct Options
   unsigned seed = 0;         // start face of the Nyström sampling
   std::string markdown;      // also write the tables to this file
   std::string png_dir;       // pictures of the best and worst models of each method
+  std::string labels_dir;    // each result's labels, METHOD_ID.seg in the .off's face order
   double samples_factor = 0; // experiment: Nyström samples = factor * k + 1
   double vsi_fraction = 0.01;
   double eta = 0.1, min_part_area = -1.; // < 0: the variant's
@@ -330,7 +333,19 @@ std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g
     ho.min_boundary_contrast = o.auto_contrast;
   if(o.neck_scale >= 0.)
     ho.neck_scale = o.neck_scale;
+  if(o.crease_angle >= 0.)
+    ho.k_way.crease_angle = o.crease_angle;
   return SpectralSeg::segment_hybrid(wg, ho, exec).labels;
+}
+
+// a peer's labels (one per face of the .off file) in the mesh's face order
+std::vector<int> read_in_mesh_order(const std::string& file, const std::vector<std::size_t>& input_face_of_face)
+{
+  const std::vector<int> file_order = SpectralSeg::Evaluation::read_labels(file);
+  std::vector<int> mesh_order(input_face_of_face.size());
+  for(std::size_t face = 0; face < mesh_order.size(); ++face)
+    mesh_order[face] = file_order.at(input_face_of_face[face]);
+  return mesh_order;
 }
 
 std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
@@ -536,6 +551,8 @@ int run(int argc, char** argv)
       o.auto_spectrum = std::stod(next());
     else if(a == "--markdown")
       o.markdown = next();
+    else if(a == "--labels-dir")
+      o.labels_dir = next();
     else if(a == "--png-dir")
       o.png_dir = next();
     else if(a == "--seed")
@@ -600,12 +617,16 @@ int run(int argc, char** argv)
     for(const std::string& method : o.methods)
     {
       const auto t0 = std::chrono::steady_clock::now();
-      if(method != "sdf" && method != "kway" && method != "auto" && method != "salient" && method != "contrast")
-        throw std::runtime_error("unknown method '" + method + "' (kway, auto, contrast, salient or sdf)");
+      const bool peer = method == "cpc" || method == "seg_mat" || method == "cgal_sdf";
+      if(method != "sdf" && method != "kway" && method != "auto" && method != "salient" && method != "contrast" && !peer)
+        throw std::runtime_error("unknown method '" + method +
+                                 "' (kway, auto, contrast, salient, sdf, or a peer's labels: cpc, seg_mat, cgal_sdf)");
       Options mo = o;
       if(method == "auto" && mo.auto_k == 0)
         mo.auto_k = 20;
-      const std::vector<int> labels = method == "sdf"       ? run_sdf(mesh)
+      const std::vector<int> labels = peer ? read_in_mesh_order((fs::path(o.dir) / "peers" / method / (id + ".seg")).string(),
+                                                                report.input_face_of_face)
+                                      : method == "sdf"       ? run_sdf(mesh)
                                       : method == "salient" ? run_salient(mo, g)
                                       : method == "contrast" ? run_contrast(mo, g)
                                                             : run_kway(mo, g, k);
@@ -617,6 +638,17 @@ int run(int argc, char** argv)
       ri /= double(humans.size());
       Row r{id, category, method_name, g.number_of_faces(), k, 0, ri, seconds, {}};
       r.segments = std::set<int>(labels.begin(), labels.end()).size();
+      if(!o.labels_dir.empty())
+      {
+        fs::create_directories(o.labels_dir);
+        std::vector<int> file_order(report.face_of_input_face.size(), -1);
+        for(std::size_t input = 0; input < file_order.size(); ++input)
+          if(report.face_of_input_face[input] != report.no_face)
+            file_order[input] = labels.at(report.face_of_input_face[input]);
+        std::ofstream seg(fs::path(o.labels_dir) / (method_name + "_" + id + ".seg"));
+        for(int l : file_order)
+          seg << l << '\n';
+      }
       if(!o.png_dir.empty())
         r.labels = labels;
       rows.push_back(r);

@@ -695,6 +695,25 @@ TEST_CASE("contrast merge: the neck ratio keeps the compact part and merges the 
   }
 }
 
+TEST_CASE("contrast merge: the clusters are split along closed concave creases first", "[hybrid][creases]")
+{
+  // two K-means clusters cannot hold the star's five parts; split along the
+  // creases that close around each limb, they become five regions, and the
+  // limbs' creased boundaries are too strong to merge
+  const Star& s = star();
+  Hybrid_options two;
+  two.clusters = 2;
+  const K_way_result split = segment_hybrid(s.weighted, two, Execution(1));
+  INFO("segments " << split.number_of_segments);
+  CHECK(split.number_of_segments == 5);
+  CHECK(Evaluation::rand_index_error(split.labels, s.soup.face_part) < 0.02);
+  // without the split, at most the two clusters
+  two.k_way.crease_angle = 0.;
+  CHECK(segment_hybrid(s.weighted, two, Execution(1)).number_of_segments <= 2);
+  two.k_way.crease_angle = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(segment_hybrid(s.weighted, two), Invalid_input);
+}
+
 TEST_CASE("crease regions: closed loops of concave creases bound the star's limbs", "[k_way][creases]")
 {
   const Star& s = star();

@@ -94,8 +94,8 @@ struct Basic_K_way_options
   /// the concave strength already tell apart), linear in between. 0 turns
   /// it off.
   double merge_separation_scale = 2.;
-  /// with extra clusters (our addition): before the merge, each K-means
-  /// cluster is split along the closed loops of concave creases of at least
+  /// with extra clusters, and in the contrast merge (`segment_hybrid()`)
+  /// (our addition): before the merge, each K-means cluster is split along the closed loops of concave creases of at least
   /// this dihedral angle, in degrees (`Refinement::crease_regions()`), so
   /// that a part bounded by a crease all around (a shaft in a housing, a
   /// knob on a lid) is not shared with its neighbour; 0 turns it off

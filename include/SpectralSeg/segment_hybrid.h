@@ -10,6 +10,7 @@
 #include <SpectralSeg/Clustering/Kmeans.h>
 #include <SpectralSeg/K_way_options.h>
 #include <SpectralSeg/Refinement/connected_segments.h>
+#include <SpectralSeg/Refinement/crease_regions.h>
 #include <SpectralSeg/Refinement/graph_cut_boundaries.h>
 #include <SpectralSeg/Refinement/merge_segments.h>
 #include <SpectralSeg/Refinement/sharp_crease_share.h>
@@ -37,11 +38,14 @@ struct Basic_hybrid_options
 {
   /// the embedding, K-means and graph-cut settings, the affinity kernel,
   /// `merge_min_area_fraction` (0.005 by default: segments under 0.5% of the
-  /// area are merged first, whatever their boundary) and
+  /// area are merged first, whatever their boundary),
   /// `merge_separation_scale` (the merge order's embedding-separation
-  /// factor, as in `segment_k_way()`; 0: none); `extra_clusters`,
-  /// `alternative_extra_clusters`, `merge_strength_limit`,
-  /// `merge_size_exponent` and `crease_angle` are not used
+  /// factor, as in `segment_k_way()`; 0: none) and `crease_angle` (the
+  /// clusters are split along closed loops of concave creases of at least
+  /// this many degrees before the merge, as in `segment_k_way()`; 0: no
+  /// split, the contrast merge until 2026-11-25); `extra_clusters`,
+  /// `alternative_extra_clusters`, `merge_strength_limit` and
+  /// `merge_size_exponent` are not used
   Basic_K_way_options<AffinityKernel> k_way;
   /// the number of K-means clusters of the over-segmentation (default 20);
   /// at least 2
@@ -150,7 +154,11 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
 /// 1. spectral embedding in `options.clusters` dimensions (exact for small
 ///    meshes, Nyström for large ones, `options.k_way.embedding`) and
 ///    K-means into `options.clusters` clusters, as in `segment_k_way()`;
-///    the clusters are made connected regions;
+///    the clusters are split along the closed loops of concave creases of at
+///    least `options.k_way.crease_angle` (`Refinement::crease_regions()`, as
+///    in `segment_k_way()`: a part bounded by a crease all around, such as a
+///    knob on a box, is then never half of a cluster that also covers some
+///    of the box) and made connected regions;
 /// 2. segments under `options.k_way.merge_min_area_fraction` of the area are
 ///    merged into a neighbour, smallest first;
 /// 3. the two adjacent segments whose boundary has the lowest contrast are
@@ -191,7 +199,8 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
 ///         `options.min_segments` is 0, `options.min_boundary_contrast`
 ///         is not finite and positive,
 ///         `options.k_way.merge_separation_scale` is negative or not a
-///         number, or `options.neck_scale` is negative or not finite
+///         number, `options.neck_scale` is negative or not finite, or
+///         `options.k_way.crease_angle` is not a number
 /// \throws Error if the affinity matrix has no positive eigenvalue after the first
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename AffinityKernel = Kernels::Exponential_kernel>
@@ -209,6 +218,8 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     throw Invalid_input("hybrid segmentation: the merge separation scale must be a number of at least 0");
   if(!(options.neck_scale >= 0.) || !std::isfinite(options.neck_scale))
     throw Invalid_input("hybrid segmentation: the neck scale must be a finite number of at least 0");
+  if(std::isnan(options.k_way.crease_angle))
+    throw Invalid_input("hybrid segmentation: the crease angle is not a number");
   const std::size_t n = graph.graph().number_of_faces();
   K_way_result r;
   internal::Stage_timer lap(r.timings);
@@ -232,6 +243,12 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   exec.report("k-means", 1.);
   lap("k-means");
   r.labels = r.clusters.labels;
+  if(options.k_way.crease_angle > 0.)
+  {
+    std::vector<int> region;
+    if(Refinement::crease_regions(graph.graph(), options.k_way.crease_angle, region) > 1)
+      Refinement::split_along_regions(region, r.labels);
+  }
   Refinement::make_segments_connected(graph.graph(), r.labels);
   Refinement::Embedding_separation separation;
   if(options.k_way.merge_separation_scale > 0.)

@@ -92,8 +92,8 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
     ->check(CLI::IsMember({"banded", "thesis"}))
     ->capture_default_str();
   cmd->add_option("--crease-angle", o.crease_angle,
-                  "with extra clusters: split the K-means clusters along closed loops of concave creases of at least "
-                  "this many degrees before merging (0: off)")
+                  "with extra clusters and in --k auto's contrast merge: split the K-means clusters along closed loops "
+                  "of concave creases of at least this many degrees before merging (0: off)")
     ->capture_default_str()
     ->check(Finite_range(0., 180.));
   cmd->add_option("--merge-size-exponent", o.merge_size_exponent,
