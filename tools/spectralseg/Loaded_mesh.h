@@ -27,11 +27,6 @@ struct Loaded_mesh
   Mesh mesh;
   SpectralSeg::IO::Mesh_file_report report;
   SpectralSeg::Dual_graph graph;
-  // the order of the file for the mesh outputs (the mesh stores its faces
-  // and vertices along a Hilbert curve): each face's position in the file's
-  // face order, each vertex's position in the order those faces first use
-  // the vertices
-  std::vector<std::size_t> face_rank, vertex_rank;
 
   Loaded_mesh(const std::string& path, const Progress_printer& out)
   {
@@ -39,16 +34,6 @@ struct Loaded_mesh
     for(const std::string& w : report.warnings)
       out.message("warning: " + w);
     graph = SpectralSeg::make_dual_graph(mesh);
-    face_rank = report.input_rank_of_faces();
-    std::vector<Mesh::Face_index> in_file_order(face_rank.size());
-    for(Mesh::Face_index f : mesh.faces())
-      in_file_order[face_rank[std::size_t(f)]] = f;
-    vertex_rank.assign(mesh.number_of_vertices(), std::size_t(-1));
-    std::size_t next = 0;
-    for(Mesh::Face_index f : in_file_order)
-      for(Mesh::Vertex_index v : vertices_around_face(mesh.halfedge(f), mesh))
-        if(vertex_rank[std::size_t(v)] == std::size_t(-1))
-          vertex_rank[std::size_t(v)] = next++;
     const std::size_t degenerate = graph.geometry().number_of_degenerate_faces();
     if(degenerate > 0)
       out.message("warning: " + std::to_string(degenerate) +

@@ -96,11 +96,23 @@ inline void write_mesh_outputs(const std::string& mesh, bool binary, const std::
   // labels are in the order of the mesh's face indices
   const auto segment_of = [&labels](Mesh::Face_index f) -> int { return labels[std::size_t(f)]; };
   const auto segments = boost::make_function_property_map<Mesh::Face_index, int>(segment_of);
-  // faces and vertices in the file's order
+  // faces and vertices in the file's order (the mesh stores them along a
+  // Hilbert curve): each face's position in the file's face order, each
+  // vertex's in the order those faces first use the vertices
+  const std::vector<std::size_t> face_ranks = m.report.input_rank_of_faces();
+  std::vector<Mesh::Face_index> in_file_order(face_ranks.size());
+  for(Mesh::Face_index f : m.mesh.faces())
+    in_file_order[face_ranks[std::size_t(f)]] = f;
+  std::vector<std::size_t> vertex_ranks(m.mesh.number_of_vertices(), std::size_t(-1));
+  std::size_t next = 0;
+  for(Mesh::Face_index f : in_file_order)
+    for(Mesh::Vertex_index v : vertices_around_face(m.mesh.halfedge(f), m.mesh))
+      if(vertex_ranks[std::size_t(v)] == std::size_t(-1))
+        vertex_ranks[std::size_t(v)] = next++;
   const auto face_rank = boost::make_function_property_map<Mesh::Face_index, std::size_t>(
-    [&m](Mesh::Face_index f) { return m.face_rank[std::size_t(f)]; });
+    [&face_ranks](Mesh::Face_index f) { return face_ranks[std::size_t(f)]; });
   const auto vertex_rank = boost::make_function_property_map<Mesh::Vertex_index, std::size_t>(
-    [&m](Mesh::Vertex_index v) { return m.vertex_rank[std::size_t(v)]; });
+    [&vertex_ranks](Mesh::Vertex_index v) { return vertex_ranks[std::size_t(v)]; });
   const auto np =
     SpectralSeg::parameters::use_binary_mode(binary).face_index_map(face_rank).vertex_index_map(vertex_rank);
   if(!mesh.empty())
