@@ -7,11 +7,14 @@
 #                                   (doc/hardening.md; scripts/sanitize.sh needs only gcc)
 set -euo pipefail
 
+# the tool alone (the demo): a compiler rather than build-essential (no
+# dpkg-dev and its Perl), and Boost's headers through libcgal-dev (the
+# Boost Graph Library is headers only here: libboost-graph-dev would add
+# ICU, regex, serialization and test) -- 195 packages, 148 MB
 TOOL_PACKAGES=(
-  build-essential cmake pkg-config
-  libcgal-dev libgmp-dev libmpfr-dev
+  g++ make cmake
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libspectra-dev
-  libboost-graph-dev
   libtbb-dev libembree-dev
   libcli11-dev nlohmann-json3-dev libpng-dev
 )
@@ -19,7 +22,7 @@ PACKAGES=(
   build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev
   libeigen3-dev libspectra-dev
-  libboost-graph-dev libboost-program-options-dev
+  libboost-dev libboost-program-options-dev
   libtbb-dev libembree-dev libopenmesh-dev
   catch2 libcli11-dev nlohmann-json3-dev libpng-dev
   doxygen

@@ -13,11 +13,6 @@
 
 #include <SpectralSeg/IO/write_face_values.h>
 #include <SpectralSeg/Rendering/render_mesh_geometry.h>
-#include <SpectralSeg/Kernels/Any_kernel.h>
-#include <SpectralSeg/Kernels/Exponential_kernel.h>
-#include <SpectralSeg/Kernels/Gaussian_kernel.h>
-#include <SpectralSeg/Refinement/graph_cut_boost_backends.h> // --graph-cut-backend boost-csr, boost-list
-#include <SpectralSeg/k_way_segmentation.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -32,6 +27,7 @@ namespace spectralseg_cli {
 
 struct Segment_options
 {
+  Segment_options();
   std::string mesh;
   std::string k;
   std::size_t max_k = 20;
@@ -43,14 +39,15 @@ struct Segment_options
   std::string graph_cut_backend = "default";
   unsigned threads = 0;
   unsigned seed = 0;
-  std::size_t extra_clusters = SpectralSeg::K_way_options().extra_clusters;
-  std::vector<std::size_t> alternative_extra_clusters = SpectralSeg::K_way_options().alternative_extra_clusters;
+  // the library's defaults, set by the constructor (segmentation_methods.cpp)
+  std::size_t extra_clusters = 0;
+  std::vector<std::size_t> alternative_extra_clusters;
   std::string graph_cut = "banded";
-  double crease_angle = SpectralSeg::K_way_options().crease_angle;
-  double merge_size_exponent = SpectralSeg::K_way_options().merge_size_exponent;
-  double merge_separation = SpectralSeg::K_way_options().merge_separation_scale;
+  double crease_angle = 0.;
+  double merge_size_exponent = 0.;
+  double merge_separation = 0.;
   double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
-  double neck_scale = SpectralSeg::Hybrid_options().neck_scale;
+  double neck_scale = 0.;
   std::string labels, out_mesh, png, json;
   bool binary = false;   // PLY outputs in binary
   std::string parts_dir; // one PLY file per segment
@@ -288,6 +285,15 @@ inline std::size_t parse_k(const std::string& text)
   return static_cast<std::size_t>(v);
 }
 
+// Runs the metric and the k-way or merge method (--k K, or --k auto with a
+// merge method) on a loaded mesh; adds the report entries and the stage
+// timings (the metric's among them), names the metric, returns the labels.
+// Defined in segmentation_methods.cpp, the translation unit of the methods.
+std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, const SpectralSeg::Dual_graph& graph,
+                                   const SpectralSeg::Execution& exec, nlohmann::ordered_json& report,
+                                   std::vector<std::pair<std::string, double>>& timings, std::string& metric,
+                                   const Progress_printer& out);
+
 inline int run_segment(const Segment_options& o, Progress_printer& out)
 {
   using clock = std::chrono::steady_clock;
@@ -318,99 +324,10 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
     t0 = clock::now();
     return write_segment_outputs(o, m, labels, exec, "", report, timings, lap, started, out);
   }
-  std::size_t most_extra = o.extra_clusters;
-  for(std::size_t e : o.alternative_extra_clusters)
-    most_extra = std::max(most_extra, e);
-  check_segmentation_fits(n, k == 0 ? std::min(o.max_k, n - 1) : std::min(k + most_extra, n - 1), o.sampling,
-                          o.samples, SpectralSeg::Embedding::Embedding_options().exact_face_limit);
-  const SpectralSeg::Metrics::Any_weight metric = make_metric(o.metric);
-  const std::vector<double> weights = metric(m.graph, exec);
-  const SpectralSeg::Weighted_dual_graph weighted(m.graph, weights);
-  lap("metric");
-
-  SpectralSeg::K_way_options options;
-  options.embedding.method = o.sampling == "exact" ? SpectralSeg::Embedding::Method::exact
-                             : o.sampling == "auto" ? SpectralSeg::Embedding::Method::automatic
-                                                    : SpectralSeg::Embedding::Method::nystrom;
-  if(o.sampling == "gamma")
-    options.embedding.sampling = SpectralSeg::Embedding::Sampling_method::gamma;
-  options.embedding.samples = o.samples;
-  options.embedding.seed = o.seed;
-  options.extra_clusters = o.extra_clusters;
-  options.alternative_extra_clusters = o.alternative_extra_clusters;
-  options.boundary_enhancement = !o.no_graph_cut;
-  if(o.graph_cut == "thesis")
-    options.graph_cut = SpectralSeg::Refinement::Graph_cut_options();
-  options.crease_angle = o.crease_angle;
-  options.merge_size_exponent = o.merge_size_exponent;
-  options.merge_separation_scale = o.merge_separation;
-  if(o.graph_cut_backend == "maxflow")
-    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::maxflow;
-  else if(o.graph_cut_backend == "boost-csr")
-    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_compressed_sparse_row;
-  else if(o.graph_cut_backend == "boost-list")
-    options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::boost_adjacency_list;
-  auto run = [&](const auto& kernel) {
-    SpectralSeg::Basic_K_way_automatic_options<std::decay_t<decltype(kernel)>> automatic;
-    automatic.k_way = options.with_kernel(kernel);
-    automatic.max_k = std::max<std::size_t>(2, std::min(o.max_k, n - 1));
-    if(o.min_boundary_contrast > 0.)
-      automatic.min_boundary_contrast = o.min_boundary_contrast;
-    automatic.parts = o.salient.parts;
-    if(k == 0 && o.salient.method == "contrast-merge")
-    {
-      SpectralSeg::Basic_hybrid_options<std::decay_t<decltype(kernel)>> hybrid;
-      hybrid.k_way = automatic.k_way;
-      hybrid.clusters = automatic.max_k;
-      if(o.min_boundary_contrast > 0.)
-        hybrid.min_boundary_contrast = o.min_boundary_contrast;
-      hybrid.neck_scale = o.neck_scale;
-      hybrid.parts = o.salient.parts;
-      return SpectralSeg::segment_hybrid(weighted, hybrid, exec);
-    }
-    return k == 0 ? SpectralSeg::segment_k_way_automatic(weighted, automatic, exec)
-                  : SpectralSeg::segment_k_way(weighted, k, automatic.k_way, exec);
-  };
-  // one instantiation of the methods for both kernels
-  const SpectralSeg::K_way_result r =
-    run(o.kernel == "gaussian" ? SpectralSeg::Kernels::Any_kernel(SpectralSeg::Kernels::Gaussian_kernel())
-                               : SpectralSeg::Kernels::Any_kernel(SpectralSeg::Kernels::Exponential_kernel()));
-  for(const auto& t : r.timings)
-    timings.push_back(t);
+  std::string metric;
+  std::vector<int> labels = run_k_way_methods(o, k, m.graph, exec, report, timings, metric, out);
   t0 = clock::now();
-  if(k > 0 && r.number_of_segments != k)
-  {
-    const std::size_t parts = m.graph.number_of_components();
-    out.message("warning: " + std::to_string(r.number_of_segments) + " segments instead of " + std::to_string(k) +
-                (parts > k ? ": the mesh is " + std::to_string(parts) +
-                               " separate parts that do not touch (each larger than 1% of the area), and a segment "
-                               "never spans two of them"
-                           : ""));
-  }
-
-  if(k == 0)
-  {
-    report["auto_method"] = o.salient.method;
-    report["hierarchy"] = hierarchy_report(r.hierarchy, false);
-  }
-  warn_missing_parts(o.salient.parts, r.hierarchy, out);
-  report["kernel"] = o.kernel;
-  report["embedding"] = r.embedding.exact ? "exact" : "nystrom";
-  report["samples"] = r.embedding.samples;
-  report["kernel_width"] = r.embedding.kernel_width;
-  report["graph_cut"] = !o.no_graph_cut;
-  if(k > 0)
-    report["extra_clusters"] = r.extra_clusters; // the kept over-segmentation's
-  if(k > 0 && !o.alternative_extra_clusters.empty())
-    report["concave_normalized_cut"] = r.normalized_cut;
-  if(r.embedding.exact && o.sampling == "auto")
-    for(const char* option : {"--samples", "--seed"})
-      if(given(o.cli, option))
-        out.message(std::string("warning: ") + option + " was ignored: --sampling auto chose the exact embedding (" +
-                    std::to_string(n) + " faces, at most " +
-                    std::to_string(SpectralSeg::Embedding::Embedding_options().exact_face_limit) +
-                    "), which takes no samples");
-  return write_segment_outputs(o, m, r.labels, exec, metric.name(), report, timings, lap, started, out);
+  return write_segment_outputs(o, m, labels, exec, metric, report, timings, lap, started, out);
 }
 
 } // namespace spectralseg_cli
