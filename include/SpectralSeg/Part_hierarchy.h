@@ -181,12 +181,22 @@ template <typename Step>
 Part_hierarchy hierarchy_from_merges(const std::vector<int>& labels, const std::vector<double>& face_areas,
                                      const std::vector<Step>& steps, std::size_t answer)
 {
-  std::vector<Part_node> nodes;
+  // every face list allocated at its size: on large meshes the lists of
+  // all the nodes are the largest part of the hierarchy
+  std::vector<std::size_t> count;
+  for(int label : labels)
+  {
+    if(std::size_t(label) >= count.size())
+      count.resize(std::size_t(label) + 1, 0);
+    ++count[std::size_t(label)];
+  }
+  std::vector<Part_node> nodes(count.size());
+  nodes.reserve(count.size() + steps.size());
+  for(std::size_t l = 0; l < count.size(); ++l)
+    nodes[l].faces.reserve(count[l]);
   for(std::size_t f = 0; f < labels.size(); ++f)
   {
     const std::size_t l = std::size_t(labels[f]);
-    if(l >= nodes.size())
-      nodes.resize(l + 1);
     nodes[l].faces.push_back(std::uint32_t(f));
     nodes[l].area += face_areas[f];
   }
@@ -199,6 +209,7 @@ Part_hierarchy hierarchy_from_merges(const std::vector<int>& labels, const std::
     if(nodes[b].faces.front() < nodes[a].faces.front())
       std::swap(a, b);
     Part_node node;
+    node.faces.reserve(nodes[a].faces.size() + nodes[b].faces.size());
     std::merge(nodes[a].faces.begin(), nodes[a].faces.end(), nodes[b].faces.begin(), nodes[b].faces.end(),
                std::back_inserter(node.faces));
     node.area = nodes[a].area + nodes[b].area;

@@ -373,6 +373,11 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   problem.labels = k;
   std::vector<std::size_t> face_of_variable;
   std::vector<double> face_cost(k), within_reach;
+  // at most the band's faces become variables: reserved, so that the
+  // largest arrays of a large mesh are not grown by doubling
+  const std::size_t band_faces = std::size_t(std::count(in_band.begin(), in_band.end(), char(1)));
+  face_of_variable.reserve(band_faces);
+  problem.cost.reserve(band_faces * k);
   for(std::size_t f = 0; f < n; ++f)
   {
     if(labels[f] < 0 || std::size_t(labels[f]) >= k)
@@ -414,6 +419,11 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
 
   // Edges between two variables stay; an edge to a fixed face costs its
   // weight for every label but the fixed face's.
+  std::size_t variable_edges = 0;
+  for(const Dual_graph::Edge& e : graph.edges())
+    variable_edges += variable[e.face[0]] != none && variable[e.face[1]] != none;
+  problem.edges.reserve(variable_edges);
+  problem.weights.reserve(variable_edges);
   for(std::size_t i = 0; i < graph.edges().size(); ++i)
   {
     const Dual_graph::Edge& e = graph.edges()[i];

@@ -70,6 +70,12 @@ struct Potts_adjacency
       around[a] += p.weights[i];
       around[b] += p.weights[i];
     }
+    std::vector<std::size_t> count(p.labels, 0);
+    for(std::size_t v = 0; v < p.vertices; ++v)
+      for(std::size_t c = 0; c < p.labels; ++c)
+        count[c] += std::isfinite(p.cost[v * p.labels + c]);
+    for(std::size_t c = 0; c < p.labels; ++c)
+      able[c].reserve(count[c]);
     for(std::size_t v = 0; v < p.vertices; ++v)
       for(std::size_t c = 0; c < p.labels; ++c)
         if(std::isfinite(p.cost[v * p.labels + c]))
