@@ -807,20 +807,30 @@ TEST_CASE("alpha expansion: no expansion move improves its result, out-of-reach 
   // a quarter of the (vertex, label) pairs out of reach (infinite cost)
   Refinement::internal::Potts_problem p;
   const std::size_t side = 12;
-  p.vertices = side * side;
   p.labels = 4;
   std::uint32_t state = 12345u;
   const auto next = [&state]() {
     state = state * 1664525u + 1013904223u;
     return double(state >> 8) / double(1u << 24);
   };
-  std::vector<std::size_t> l(p.vertices);
-  for(std::size_t v = 0; v < p.vertices; ++v)
+  std::vector<std::size_t> l(side * side);
+  std::size_t out_of_reach = 0;
+  for(std::size_t v = 0; v < side * side; ++v)
   {
     l[v] = v % p.labels;
+    std::vector<double> costs(p.labels);
     for(std::size_t c = 0; c < p.labels; ++c)
-      p.cost.push_back(c != l[v] && next() < 0.25 ? std::numeric_limits<double>::infinity() : 3. * next());
+    {
+      costs[c] = c != l[v] && next() < 0.25 ? std::numeric_limits<double>::infinity() : 3. * next();
+      out_of_reach += std::isinf(costs[c]) ? 1 : 0;
+    }
+    p.add_vertex(costs);
+    for(std::size_t c = 0; c < p.labels; ++c)
+      CHECK(p.cost_of(v, c) == costs[c]); // the finite terms stored, the others out of reach
   }
+  REQUIRE(p.vertices == side * side);
+  CHECK(p.cost.size() == side * side * p.labels - out_of_reach);
+  CHECK(out_of_reach > 0);
   for(std::size_t i = 0; i < side; ++i)
     for(std::size_t j = 0; j < side; ++j)
     {
@@ -840,7 +850,7 @@ TEST_CASE("alpha expansion: no expansion move improves its result, out-of-reach 
   CHECK(after < before);
   CHECK(after == Approx(p.energy(l)).epsilon(1e-12));
   for(std::size_t v = 0; v < p.vertices; ++v)
-    CHECK(std::isfinite(p.cost[v * p.labels + l[v]]));
+    CHECK(std::isfinite(p.cost_of(v, l[v])));
   // a local minimum: no label's expansion lowers the energy any more
   const Refinement::internal::Potts_adjacency adjacency(p);
   std::vector<std::size_t> candidate(p.vertices, std::size_t(-1));

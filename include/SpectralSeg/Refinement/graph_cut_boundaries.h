@@ -373,11 +373,20 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   problem.labels = k;
   std::vector<std::size_t> face_of_variable;
   std::vector<double> face_cost(k), within_reach;
-  // at most the band's faces become variables: reserved, so that the
-  // largest arrays of a large mesh are not grown by doubling
-  const std::size_t band_faces = std::size_t(std::count(in_band.begin(), in_band.end(), char(1)));
+  // at most the band's faces become variables, with their own label and
+  // those within reach: reserved, so that the largest arrays of a large
+  // mesh are not grown by doubling
+  std::size_t band_faces = 0, band_terms = 0;
+  for(std::size_t f = 0; f < n; ++f)
+    if(in_band[f])
+    {
+      ++band_faces;
+      band_terms += options.band_width > 0. ? 1 + reach.offset[f + 1] - reach.offset[f] : k;
+    }
   face_of_variable.reserve(band_faces);
-  problem.cost.reserve(band_faces * k);
+  problem.first.reserve(band_faces + 1);
+  problem.label.reserve(band_terms);
+  problem.cost.reserve(band_terms);
   for(std::size_t f = 0; f < n; ++f)
   {
     if(labels[f] < 0 || std::size_t(labels[f]) >= k)
@@ -411,9 +420,8 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
       continue;
     variable[f] = face_of_variable.size();
     face_of_variable.push_back(f);
-    problem.cost.insert(problem.cost.end(), face_cost.begin(), face_cost.end());
+    problem.add_vertex(face_cost);
   }
-  problem.vertices = face_of_variable.size();
   if(problem.vertices == 0)
     return;
 
@@ -437,9 +445,9 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
     {
       const std::size_t v = a != none ? a : b;
       const std::size_t fixed_label = std::size_t(labels[a != none ? e.face[1] : e.face[0]]);
-      for(std::size_t c = 0; c < k; ++c)
-        if(c != fixed_label)
-          problem.cost[v * k + c] += edge_costs[i];
+      for(std::size_t t = problem.first[v]; t < problem.first[v + 1]; ++t)
+        if(problem.label[t] != fixed_label)
+          problem.cost[t] += edge_costs[i];
     }
   }
 

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -19,21 +20,49 @@ namespace Refinement {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// A labelling problem: minimise sum_v cost[v * labels + l_v] +
-// sum_{(u,v)} w_uv [l_u != l_v].
+// A labelling problem: minimise sum_v cost(v, l_v) +
+// sum_{(u,v)} w_uv [l_u != l_v]. Only the finite data terms are stored, in
+// compressed rows: most vertices of a graph cut in a band can take two or
+// three of the labels, and a dense vertices x labels table is the largest
+// array of the problem on a large mesh.
 struct Potts_problem
 {
   std::size_t vertices = 0;
   std::size_t labels = 0;
-  std::vector<double> cost; // vertices x labels, row-major
+  // vertex v may take the labels label[first[v]], ..., label[first[v + 1] - 1]
+  // (ascending) at the costs beside them; every other label is out of reach
+  std::vector<std::size_t> first{0};
+  std::vector<std::uint32_t> label;
+  std::vector<double> cost;
   std::vector<std::pair<std::size_t, std::size_t>> edges;
   std::vector<double> weights;
+
+  // Appends a vertex with its cost for each label (infinite: out of reach).
+  void add_vertex(const std::vector<double>& costs)
+  {
+    for(std::size_t c = 0; c < costs.size(); ++c)
+      if(std::isfinite(costs[c]))
+      {
+        label.push_back(std::uint32_t(c));
+        cost.push_back(costs[c]);
+      }
+    first.push_back(label.size());
+    ++vertices;
+  }
+
+  double cost_of(std::size_t v, std::size_t c) const
+  {
+    for(std::size_t i = first[v]; i < first[v + 1]; ++i)
+      if(label[i] == c)
+        return cost[i];
+    return std::numeric_limits<double>::infinity();
+  }
 
   double energy(const std::vector<std::size_t>& l) const
   {
     double e = 0.;
     for(std::size_t v = 0; v < vertices; ++v)
-      e += cost[v * labels + l[v]];
+      e += cost_of(v, l[v]);
     for(std::size_t i = 0; i < edges.size(); ++i)
       if(l[edges[i].first] != l[edges[i].second])
         e += weights[i];
@@ -71,15 +100,13 @@ struct Potts_adjacency
       around[b] += p.weights[i];
     }
     std::vector<std::size_t> count(p.labels, 0);
-    for(std::size_t v = 0; v < p.vertices; ++v)
-      for(std::size_t c = 0; c < p.labels; ++c)
-        count[c] += std::isfinite(p.cost[v * p.labels + c]);
+    for(std::uint32_t c : p.label)
+      ++count[c];
     for(std::size_t c = 0; c < p.labels; ++c)
       able[c].reserve(count[c]);
     for(std::size_t v = 0; v < p.vertices; ++v)
-      for(std::size_t c = 0; c < p.labels; ++c)
-        if(std::isfinite(p.cost[v * p.labels + c]))
-          able[c].push_back(v);
+      for(std::size_t i = p.first[v]; i < p.first[v + 1]; ++i)
+        able[p.label[i]].push_back(v);
   }
 };
 
@@ -107,7 +134,7 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> vertex_of;
   for(const std::size_t v : adjacency.able[alpha])
-    if(l[v] != alpha && p.cost[v * p.labels + alpha] - p.cost[v * p.labels + l[v]] <= adjacency.around[v])
+    if(l[v] != alpha && p.cost_of(v, alpha) - p.cost_of(v, l[v]) <= adjacency.around[v])
     {
       candidate[v] = vertex_of.size();
       vertex_of.push_back(v);
@@ -121,8 +148,8 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
   for(std::size_t i = 0; i < vertex_of.size(); ++i)
   {
     const std::size_t v = vertex_of[i];
-    take[i] = p.cost[v * p.labels + alpha];
-    keep[i] = p.cost[v * p.labels + l[v]];
+    take[i] = p.cost_of(v, alpha);
+    keep[i] = p.cost_of(v, l[v]);
     for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
     {
       const std::size_t u = adjacency.neighbour[j].first;
@@ -182,7 +209,7 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
     candidate[v] = 0; // marks the vertices that move
   for(const std::size_t v : taken)
   {
-    delta += p.cost[v * p.labels + alpha] - p.cost[v * p.labels + l[v]];
+    delta += p.cost_of(v, alpha) - p.cost_of(v, l[v]);
     for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
     {
       const std::size_t u = adjacency.neighbour[j].first;
@@ -217,9 +244,8 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l)
   std::vector<std::size_t> candidate(p.vertices, std::size_t(-1));
   std::vector<char> dirty(p.labels, 1);
   const auto touch = [&](std::size_t v) {
-    for(std::size_t c = 0; c < p.labels; ++c)
-      if(std::isfinite(p.cost[v * p.labels + c]))
-        dirty[c] = 1;
+    for(std::size_t i = p.first[v]; i < p.first[v + 1]; ++i)
+      dirty[p.label[i]] = 1;
   };
   bool improved = true;
   while(improved)
