@@ -88,6 +88,32 @@ TEST_CASE("the reference points of a sphere lie near its centre", "[vsi]")
   CHECK(vsi.images.reaches.maxCoeff() < 4.05f);
 }
 
+TEST_CASE("reference points from a quarter of the faces: the others take their neighbours' depth", "[vsi]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::sphere(2., 24, 48));
+  const Dual_graph g = make_dual_graph(m);
+  const Ray_casting::AABB_ray_caster caster(g.geometry());
+  Metrics::VSI::Reference_point_options o;
+  o.measured_fraction = 0.25;
+  const Metrics::VSI::Reference_points r = Metrics::VSI::compute_reference_points(g, caster, o);
+  const std::vector<std::uint32_t> casting =
+    Metrics::VSI::spread_samples(g.geometry().centroids, std::size_t(std::ceil(0.25 * double(g.number_of_faces()))));
+  CHECK(casting.size() < g.number_of_faces() / 3);
+  double worst = 0.;
+  for(std::size_t f = 0; f < g.number_of_faces(); ++f)
+  {
+    worst = std::max(worst, r.points[f].norm());
+    CHECK(r.measured[f] == 1); // every face got a depth, cast or from its neighbours
+    CHECK(r.diameters[f] == Approx(4.).epsilon(0.05));
+  }
+  CHECK(worst < 0.1 * 2.);
+  for(double bad : {0., -0.5, 1.5, std::numeric_limits<double>::quiet_NaN()})
+  {
+    o.measured_fraction = bad;
+    CHECK_THROWS_AS(Metrics::VSI::compute_reference_points(g, caster, o), Invalid_input);
+  }
+}
+
 TEST_CASE("VSI distance jumps across the junction of a T, geodesic does not", "[vsi]")
 {
   const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::t_shape(4));

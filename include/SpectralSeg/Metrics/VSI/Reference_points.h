@@ -7,7 +7,9 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
+#include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/Metrics/VSI/ray_directions.h>
+#include <SpectralSeg/Metrics/VSI/spread_samples.h>
 #include <SpectralSeg/internal/Point_neighbours.h>
 #include <SpectralSeg/internal/parallel_for.h>
 
@@ -15,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -34,6 +37,11 @@ struct Reference_point_options
   std::size_t rays = 16;
   /// full opening angle of the cone of rays, in degrees
   double cone_angle_degrees = 80.;
+  /// fraction of the faces that cast their cone, spread over the shape
+  /// (`spread_samples()` on the centroids); the others take their
+  /// neighbours' mean diameter along their own normal (1: every face, the
+  /// thesis's construction; doc/benchmarks.md has 0.25 measured)
+  double measured_fraction = 1.;
   /// Laplacian smoothing iterations over the neighbourhood graph (0: none)
   std::size_t smoothing_iterations = 3;
   /// how far each iteration moves a point towards its neighbours' mean, in (0, 1]
@@ -74,9 +82,17 @@ struct Reference_points
 /// neighbours. A point whose smoothing path crosses the surface is moved to
 /// the nearest neighbouring point that did not.
 ///
+/// With `options.measured_fraction` below 1, only that fraction of the
+/// faces, spread over the shape, cast their cone (a quarter of the rays at
+/// 0.25); each other face takes the mean diameter of its neighbours that
+/// have one, propagated over the dual graph, and its point lies at half
+/// that depth along its own inward normal.
+///
 /// Faces none of whose rays hit anything (open meshes) take the mean of
 /// their neighbours' points, propagated over the dual graph; a component
 /// without any hit keeps its centroids.
+///
+/// \throws Invalid_input if `options.measured_fraction` is not in (0, 1]
 ///
 /// \tparam RayCaster a model of `RayCaster`
 ///
@@ -86,6 +102,8 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
                                           const Reference_point_options& options = Reference_point_options(),
                                           const Execution& exec = Execution())
 {
+  if(!(options.measured_fraction > 0. && options.measured_fraction <= 1.))
+    throw Invalid_input("reference points: the fraction of faces that cast rays must be in (0, 1]");
   const Mesh_geometry& geo = graph.geometry();
   const std::size_t n = geo.number_of_faces();
   const double pi = CGAL_PI;
@@ -96,10 +114,17 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
 
   const std::vector<Eigen::Vector3d> cone =
     cone_directions(options.rays, options.cone_angle_degrees * pi / 180.);
+  std::vector<std::uint8_t> casts(n, 1);
+  if(options.measured_fraction < 1.)
+  {
+    casts.assign(n, 0);
+    for(std::uint32_t f : spread_samples(geo.centroids, std::size_t(std::ceil(options.measured_fraction * double(n)))))
+      casts[f] = 1;
+  }
   internal::parallel_for(n, exec, "reference points", [&](std::size_t f) {
     const Eigen::Vector3d& normal = geo.normals[f];
     out.points[f] = geo.centroids[f];
-    if(normal.squaredNorm() < 0.5)
+    if(!casts[f] || normal.squaredNorm() < 0.5)
       return;
     std::vector<Eigen::Vector3d> dirs;
     rotate_to(-normal, cone, dirs);
@@ -120,6 +145,45 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
       out.measured[f] = 1;
     }
   });
+
+  // Faces that did not cast their cone: the mean inscribed-sphere diameter
+  // of their neighbours that did (or got one), along their own normal.
+  if(options.measured_fraction < 1.)
+  {
+    std::vector<std::uint8_t> known(n, 0);
+    for(std::size_t f = 0; f < n; ++f)
+      known[f] = casts[f];
+    bool changed = true;
+    while(changed)
+    {
+      changed = false;
+      std::vector<std::pair<std::size_t, double>> filled;
+      for(std::size_t f = 0; f < n; ++f)
+      {
+        if(known[f] || geo.normals[f].squaredNorm() < 0.5)
+          continue;
+        double sum = 0.;
+        int count = 0;
+        graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f), [&](Dual_graph::size_type g, Dual_graph::size_type) {
+          if(known[g] && std::isfinite(out.diameters[g]))
+          {
+            sum += out.diameters[g];
+            ++count;
+          }
+        });
+        if(count > 0)
+          filled.emplace_back(f, sum / count);
+      }
+      for(const auto& p : filled)
+      {
+        out.diameters[p.first] = p.second;
+        out.points[p.first] = geo.centroids[p.first] - 0.5 * p.second * geo.normals[p.first];
+        out.measured[p.first] = 1;
+        known[p.first] = 1;
+        changed = true;
+      }
+    }
+  }
 
   // Faces without a hit: fill from measured neighbours, repeatedly.
   {
