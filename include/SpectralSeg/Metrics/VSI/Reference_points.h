@@ -24,6 +24,50 @@
 #include <vector>
 
 namespace SpectralSeg {
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Gives each face that is not `known` (and is `fillable`) the mean of
+// `value` over its known neighbours that are `usable`, layer after layer
+// over the dual graph until no face changes: `set(f, mean)` for each, after
+// the whole layer is read.
+template <typename T, typename Fillable, typename Usable, typename Set>
+void fill_from_neighbours(const Dual_graph& graph, std::vector<std::uint8_t> known, const std::vector<T>& value,
+                          const T& zero, Fillable fillable, Usable usable, Set set)
+{
+  bool changed = true;
+  while(changed)
+  {
+    changed = false;
+    std::vector<std::pair<std::size_t, T>> filled;
+    for(std::size_t f = 0; f < known.size(); ++f)
+    {
+      if(known[f] || !fillable(f))
+        continue;
+      T sum = zero;
+      int count = 0;
+      graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f), [&](Dual_graph::size_type g, Dual_graph::size_type) {
+        if(known[g] && usable(std::size_t(g)))
+        {
+          sum += value[g];
+          ++count;
+        }
+      });
+      if(count > 0)
+        filled.emplace_back(f, sum / count);
+    }
+    for(const auto& p : filled)
+    {
+      set(p.first, p.second);
+      known[p.first] = 1;
+      changed = true;
+    }
+  }
+}
+
+} // namespace internal
+/// \endcond
+
 namespace Metrics {
 namespace VSI {
 
@@ -149,74 +193,20 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
   // Faces that did not cast their cone: the mean inscribed-sphere diameter
   // of their neighbours that did (or got one), along their own normal.
   if(options.measured_fraction < 1.)
-  {
-    std::vector<std::uint8_t> known(n, 0);
-    for(std::size_t f = 0; f < n; ++f)
-      known[f] = casts[f];
-    bool changed = true;
-    while(changed)
-    {
-      changed = false;
-      std::vector<std::pair<std::size_t, double>> filled;
-      for(std::size_t f = 0; f < n; ++f)
-      {
-        if(known[f] || geo.normals[f].squaredNorm() < 0.5)
-          continue;
-        double sum = 0.;
-        int count = 0;
-        graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f), [&](Dual_graph::size_type g, Dual_graph::size_type) {
-          if(known[g] && std::isfinite(out.diameters[g]))
-          {
-            sum += out.diameters[g];
-            ++count;
-          }
-        });
-        if(count > 0)
-          filled.emplace_back(f, sum / count);
-      }
-      for(const auto& p : filled)
-      {
-        out.diameters[p.first] = p.second;
-        out.points[p.first] = geo.centroids[p.first] - 0.5 * p.second * geo.normals[p.first];
-        out.measured[p.first] = 1;
-        known[p.first] = 1;
-        changed = true;
-      }
-    }
-  }
+    internal::fill_from_neighbours(
+      graph, casts, out.diameters, 0.,
+      [&](std::size_t f) { return geo.normals[f].squaredNorm() >= 0.5; },
+      [&](std::size_t g) { return std::isfinite(out.diameters[g]); },
+      [&](std::size_t f, double d) {
+        out.diameters[f] = d;
+        out.points[f] = geo.centroids[f] - 0.5 * d * geo.normals[f];
+        out.measured[f] = 1;
+      });
 
-  // Faces without a hit: fill from measured neighbours, repeatedly.
-  {
-    std::vector<std::uint8_t> known = out.measured;
-    bool changed = true;
-    while(changed)
-    {
-      changed = false;
-      std::vector<std::pair<std::size_t, Eigen::Vector3d>> filled;
-      for(std::size_t f = 0; f < n; ++f)
-      {
-        if(known[f])
-          continue;
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        int count = 0;
-        graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f), [&](Dual_graph::size_type g, Dual_graph::size_type) {
-          if(known[g])
-          {
-            sum += out.points[g];
-            ++count;
-          }
-        });
-        if(count > 0)
-          filled.emplace_back(f, sum / count);
-      }
-      for(const auto& p : filled)
-      {
-        out.points[p.first] = p.second;
-        known[p.first] = 1;
-        changed = true;
-      }
-    }
-  }
+  // Faces without a hit: the mean of their measured neighbours' points.
+  internal::fill_from_neighbours(
+    graph, out.measured, out.points, Eigen::Vector3d::Zero().eval(), [](std::size_t) { return true; },
+    [](std::size_t) { return true; }, [&](std::size_t f, const Eigen::Vector3d& p) { out.points[f] = p; });
 
   if(options.smoothing_iterations == 0 || n < 2)
     return out;
