@@ -36,19 +36,21 @@
 namespace spectralseg_cli {
 
 Segment_options::Segment_options()
-  : extra_clusters(SpectralSeg::K_way_options().extra_clusters),
-    alternative_extra_clusters(SpectralSeg::K_way_options().alternative_extra_clusters),
-    crease_angle(SpectralSeg::K_way_options().crease_angle),
-    merge_size_exponent(SpectralSeg::K_way_options().merge_size_exponent),
-    merge_separation(SpectralSeg::K_way_options().merge_separation_scale),
-    neck_scale(SpectralSeg::Hybrid_options().neck_scale)
 {
+  const SpectralSeg::K_way_options k_way;
+  extra_clusters = k_way.extra_clusters;
+  alternative_extra_clusters = k_way.alternative_extra_clusters;
+  crease_angle = k_way.crease_angle;
+  merge_size_exponent = k_way.merge_size_exponent;
+  merge_separation = k_way.merge_separation_scale;
+  neck_scale = SpectralSeg::Hybrid_options().neck_scale;
 }
 
 Salient_cut_options::Salient_cut_options()
-  : min_part_area(SpectralSeg::Automatic_segmentation_options<>().min_part_area_fraction),
-    max_parts(SpectralSeg::Automatic_segmentation_options<>().max_parts)
 {
+  const SpectralSeg::Automatic_segmentation_options<> automatic;
+  min_part_area = automatic.min_part_area_fraction;
+  max_parts = automatic.max_parts;
 }
 
 namespace {

@@ -74,6 +74,23 @@ inline std::vector<std::size_t> hilbert_order(const std::vector<Spatial_order_ke
   return order;
 }
 
+// Reorders `items` along `order` (items[order[0]] first) and returns the new
+// index of each item.
+template <typename T>
+std::vector<std::size_t> apply_order(std::vector<T>& items, const std::vector<std::size_t>& order)
+{
+  std::vector<std::size_t> new_index(items.size());
+  std::vector<T> sorted;
+  sorted.reserve(items.size());
+  for(std::size_t i = 0; i < order.size(); ++i)
+  {
+    new_index[order[i]] = i;
+    sorted.push_back(items[order[i]]);
+  }
+  items.swap(sorted);
+  return new_index;
+}
+
 // Renumbers `points` and `triangles` in place along Hilbert curves: the
 // vertices by position, the triangles by centroid (ties by their vertices),
 // each triangle starting at its lowest vertex index (its orientation kept).
@@ -90,16 +107,7 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
   for(std::size_t v = 0; v < points.size(); ++v)
     keys[v] = {{{CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()), CGAL::to_double(points[v].z())}},
                {{v, 0, 0}}};
-  const std::vector<std::size_t> vertex_order = hilbert_order(keys);
-  std::vector<std::size_t> new_vertex(points.size());
-  std::vector<Point> sorted_points;
-  sorted_points.reserve(points.size());
-  for(std::size_t i = 0; i < vertex_order.size(); ++i)
-  {
-    new_vertex[vertex_order[i]] = i;
-    sorted_points.push_back(points[vertex_order[i]]);
-  }
-  points.swap(sorted_points);
+  const std::vector<std::size_t> new_vertex = apply_order(points, hilbert_order(keys));
 
   keys.assign(triangles.size(), Spatial_order_key());
   for(std::size_t t = 0; t < triangles.size(); ++t)
@@ -118,17 +126,7 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
     }
     k.tie = tri;
   }
-  const std::vector<std::size_t> triangle_order = hilbert_order(keys);
-  std::vector<std::size_t> new_triangle(triangles.size());
-  std::vector<std::array<std::size_t, 3>> sorted_triangles;
-  sorted_triangles.reserve(triangles.size());
-  for(std::size_t i = 0; i < triangle_order.size(); ++i)
-  {
-    new_triangle[triangle_order[i]] = i;
-    sorted_triangles.push_back(triangles[triangle_order[i]]);
-  }
-  triangles.swap(sorted_triangles);
-  return new_triangle;
+  return apply_order(triangles, hilbert_order(keys));
 }
 
 } // namespace internal
