@@ -36,6 +36,7 @@
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
 //   --extra-clusters N  K-means clusters beyond k, merged back (default 3; 0 = thesis)
 //   --alternative-extra-clusters A,B  also tried, the lowest concave normalized cut kept (default: the library's; none: only --extra-clusters)
+//   --contrast-merge-clusters N  the k-way's contrast-merge candidate's clusters (default 20; 0: none)
 //   --cut-angle-scale S  concavity scale (radians) of that normalized cut (default 0.1)
 //   --seed S       start face of the Nyström sampling
 //   --thesis       the thesis's k-way method (K_way_options::thesis(): no extra clusters, its graph cut,
@@ -111,6 +112,7 @@ struct Options
   std::string normalization = "p99"; // p99 (the library's default) or max (the thesis)
   std::size_t samples = 0;
   int extra_clusters = -1;
+  int contrast_merge_clusters = -1; // < 0: the default
   std::string alternative_extra_clusters = "-"; // "-": the default; "": none
   double cut_angle_scale = -1;
   double auto_contrast = 3;
@@ -295,6 +297,8 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
       if(!item.empty())
         ko.alternative_extra_clusters.push_back(std::size_t(std::stoul(item)));
   }
+  if(o.contrast_merge_clusters >= 0)
+    ko.contrast_merge_clusters = std::size_t(o.contrast_merge_clusters);
   if(o.cut_angle_scale > 0)
     ko.cut_angle_scale = o.cut_angle_scale;
   ko.embedding.samples = o.samples_factor > 0 ? static_cast<std::size_t>(o.samples_factor * double(k)) + 1 : o.samples;
@@ -562,6 +566,8 @@ int run(int argc, char** argv)
       o.seed = unsigned(std::stoul(next()));
     else if(a == "--extra-clusters")
       o.extra_clusters = std::stoi(next());
+    else if(a == "--contrast-merge-clusters")
+      o.contrast_merge_clusters = std::stoi(next());
     else if(a == "--alternative-extra-clusters")
     {
       o.alternative_extra_clusters = next();

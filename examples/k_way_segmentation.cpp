@@ -78,18 +78,21 @@ int main(int argc, char** argv)
   const SpectralSeg::K_way_result ours = SpectralSeg::segment_k_way(weighted, k);
   const SpectralSeg::K_way_result thesis =
     SpectralSeg::segment_k_way(weighted, k, SpectralSeg::K_way_options::thesis());
-  std::cout << "default (k + " << ours.extra_clusters << " clusters kept of k + "
-            << SpectralSeg::K_way_options().extra_clusters << " and k + "
-            << SpectralSeg::K_way_options().alternative_extra_clusters.at(0) << ", merged back to k): "
+  std::cout << "default (k + " << ours.extra_clusters << " clusters merged back to k"
+            << (ours.contrast_merge ? " by contrast" : "") << ", kept of k + "
+            << SpectralSeg::K_way_options().extra_clusters << ", k + "
+            << SpectralSeg::K_way_options().alternative_extra_clusters.at(0) << " and "
+            << SpectralSeg::K_way_options().contrast_merge_clusters << " merged by contrast): "
             << ours.number_of_segments << " segments; thesis's method: " << thesis.number_of_segments
             << " segments; Rand index error between them "
             << SpectralSeg::Evaluation::rand_index_error(ours.labels, thesis.labels) << "\n";
 
-  // One over-segmentation only (k + 2 clusters): about 20% faster, but the
-  // default's choice between two, the one whose boundaries follow concave
-  // creases best, gives better parts on psb-dev.
+  // One over-segmentation only (k + 2 clusters): faster, but the default's
+  // choice among three, the one whose boundaries follow concave creases
+  // best, gives better parts on psb-dev.
   SpectralSeg::K_way_options single;
   single.alternative_extra_clusters.clear();
+  single.contrast_merge_clusters = 0;
   const SpectralSeg::K_way_result one = SpectralSeg::segment_k_way(weighted, k, single);
   std::cout << "one over-segmentation: concave normalized cut "
             << SpectralSeg::Refinement::concave_normalized_cut(graph, one.labels, single.cut_angle_scale)

@@ -563,7 +563,8 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
                               double vsi_fraction, const py::object& ray_caster, const std::string& kernel,
                               const std::string& sampling, long long samples, long long seed,
                               bool boundary_enhancement, long long extra_clusters,
-                              const std::vector<long long>& alternative_extra_clusters, long long threads,
+                              const std::vector<long long>& alternative_extra_clusters,
+                              long long contrast_merge_clusters, long long threads,
                               const py::object& progress, bool report, bool connect_touching_parts,
                               double contact_distance, double speck_area_fraction)
 {
@@ -575,6 +576,7 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
   ks.options.alternative_extra_clusters.clear();
   for(long long e : alternative_extra_clusters)
     ks.options.alternative_extra_clusters.push_back(count("alternative_extra_clusters", e, 0, 1000));
+  ks.options.contrast_merge_clusters = count("contrast_merge_clusters", contrast_merge_clusters, 0, 1000);
   const unsigned t = static_cast<unsigned>(count("threads", threads, 0, 4096));
   Progress_bridge bridge(progress);
   struct Out
@@ -1024,6 +1026,8 @@ malformed file, InvalidInputError for a face that is not a triangle.)doc");
         py::arg("seed") = 0, py::arg("boundary_enhancement") = true,
         py::arg("extra_clusters") = static_cast<long long>(SpectralSeg::K_way_options().extra_clusters),
         py::arg("alternative_extra_clusters") = default_alternative_extra_clusters(),
+        py::arg("contrast_merge_clusters") =
+          static_cast<long long>(SpectralSeg::K_way_options().contrast_merge_clusters),
         py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("report") = false,
         py::arg("connect_touching_parts") = true, py::arg("contact_distance") = 0.005,
         py::arg("speck_area_fraction") = 0.01,
@@ -1039,8 +1043,12 @@ extra_clusters: K-means makes k + extra_clusters clusters, then the weakest
     boundaries are merged until k are left (default 2)
 alternative_extra_clusters: other numbers of extra clusters to try (default
     [8]); the segmentation whose boundaries best follow concave creases is
-    kept; [] makes one only (about 20% faster); extra_clusters=0 with [] is
-    the thesis's method
+    kept; [] makes one fewer
+contrast_merge_clusters: one more segmentation to choose from in the same
+    way: K-means into this many clusters (at least k), merged by contrast
+    down to k as the default automatic method does (default 20); 0: not
+    tried. extra_clusters=0, alternative_extra_clusters=[] and
+    contrast_merge_clusters=0 give the thesis's method
 )doc") + segmentation_method_doc)
           .c_str());
 

@@ -286,7 +286,10 @@ expect_absent("refused outputs" early.seg early.mtl early.obj out.xyz blocked.ob
 
 # --- --json -: the report on standard output, and nothing else there
 run_cli_json(segments 2 segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --mesh ${WORK}/q_json.ply --json -)
-run_cli_json(extra_clusters 2 segment ${WORK}/quads.off --k 2 --alternative-extra-clusters none --labels ${WORK}/q.seg --json -)
+run_cli_json(extra_clusters 2 segment ${WORK}/quads.off --k 2 --alternative-extra-clusters none --contrast-merge-clusters 0
+             --labels ${WORK}/q.seg --json -)
+run_cli_json(merge concave segment ${WORK}/quads.off --k 2 --alternative-extra-clusters none --contrast-merge-clusters 0
+             --labels ${WORK}/q.seg --json -)
 run_cli_json("scores;rand_index_error" 0.0 eval --mesh ${WORK}/quads.off ${WORK}/q.seg ${WORK}/q.seg --json -)
 run_cli(0 "labels: .*q.seg" segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --json -)
 
@@ -309,6 +312,8 @@ run_cli(2 "error: --kernel cannot be used here: --auto-method salient-cuts" segm
         --auto-method salient-cuts --kernel gaussian --labels ${WORK}/q.seg)
 run_cli(2 "error: --extra-clusters cannot be used here" segment ${WORK}/quads.off --k auto --extra-clusters 2
         --labels ${WORK}/q.seg)
+run_cli(2 "error: --contrast-merge-clusters cannot be used here" segment ${WORK}/quads.off --k auto
+        --contrast-merge-clusters 5 --labels ${WORK}/q.seg)
 run_cli(2 "error: --graph-cut-backend cannot be used here" segment ${WORK}/quads.off --k 2 --no-graph-cut
         --graph-cut-backend boost-csr --labels ${WORK}/q.seg)
 run_cli(2 "error: --binary cannot be used here" segment ${WORK}/quads.off --k 2 --binary --mesh ${WORK}/q.off

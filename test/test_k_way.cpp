@@ -5,6 +5,7 @@
 #include "test_meshes.h"
 
 #include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
+#include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/Kernels/Any_kernel.h>
 #include <SpectralSeg/Kernels/Gaussian_kernel.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
@@ -1007,10 +1008,13 @@ TEST_CASE("k-way with alternative extra clusters keeps the result with the lower
     K_way_options few = with_method(m), many = with_method(m), both = with_method(m);
     few.extra_clusters = 0;
     few.alternative_extra_clusters.clear();
+    few.contrast_merge_clusters = 0;
     many.extra_clusters = 6;
     many.alternative_extra_clusters.clear();
+    many.contrast_merge_clusters = 0;
     both.extra_clusters = 0;
     both.alternative_extra_clusters = {6, 0, 6}; // repeats are tried once
+    both.contrast_merge_clusters = 0;
     const K_way_result a = segment_k_way(s.weighted, k, few), b = segment_k_way(s.weighted, k, many);
     const K_way_result c = segment_k_way(s.weighted, k, both);
     CHECK(a.extra_clusters == 0);
@@ -1044,4 +1048,61 @@ TEST_CASE("k-way with alternative extra clusters keeps the result with the lower
       CHECK(stages.insert(t.first).second);
     CHECK(stages.count("choice") == 1);
   }
+}
+
+TEST_CASE("k-way tries the contrast merge cut at k and keeps it when its concave normalized cut is lower",
+          "[k_way][choice]")
+{
+  CHECK(K_way_options().contrast_merge_clusters == 20);
+  CHECK(K_way_options::thesis().contrast_merge_clusters == 0);
+  bool kept_contrast = false, kept_concave = false;
+  const auto check = [&](const Dual_graph& graph, const Weighted_dual_graph& weighted, std::size_t k,
+                         std::size_t clusters, Embedding::Method m, bool threads) {
+    INFO("k " << k << ", method " << int(m) << ", contrast-merge clusters " << clusters << ", "
+              << graph.number_of_faces() << " faces");
+    K_way_options alone = with_method(m), with = with_method(m);
+    alone.alternative_extra_clusters.clear();
+    alone.contrast_merge_clusters = 0;
+    with.alternative_extra_clusters.clear();
+    with.contrast_merge_clusters = clusters;
+    const K_way_result a = segment_k_way(weighted, k, alone), c = segment_k_way(weighted, k, with);
+    // the candidate is the contrast merge of segment_hybrid() with that
+    // many clusters (at least k), its hierarchy cut at k parts
+    Hybrid_options h;
+    h.k_way = with_method(m);
+    h.clusters = std::max(clusters, k);
+    h.parts = k;
+    const K_way_result d = segment_hybrid(weighted, h);
+    const double na = Refinement::concave_normalized_cut(graph, a.labels, with.cut_angle_scale);
+    const double nd = Refinement::concave_normalized_cut(graph, d.labels, with.cut_angle_scale);
+    const bool contrast = nd < na; // ties to the first tried
+    CHECK(c.labels == (contrast ? d.labels : a.labels));
+    CHECK(c.contrast_merge == contrast);
+    CHECK(c.extra_clusters == (contrast ? std::max(clusters, k) - k : a.extra_clusters));
+    CHECK(c.normalized_cut == Approx(std::min(na, nd)));
+    CHECK(c.number_of_segments == k);
+    if(contrast)
+      CHECK(c.hierarchy.nodes.size() == d.hierarchy.nodes.size());
+    (contrast ? kept_contrast : kept_concave) = true;
+    // side by side on several threads or one after the other: the same
+    if(threads)
+    {
+      CHECK(segment_k_way(weighted, k, with, Execution(1)).labels == c.labels);
+      CHECK(segment_k_way(weighted, k, with, Execution(3)).labels == c.labels);
+    }
+  };
+  const Star& s = star();
+  for(Embedding::Method m : {Embedding::Method::exact, Embedding::Method::nystrom})
+    for(std::size_t k : {2, 5})
+      check(s.graph, s.weighted, k, 8, m, true);
+  // the elephant's trunk and legs meet the body along short loops
+  Mesh elephant;
+  IO::read_mesh_file(SPECTRALSEG_SOURCE_DIR "/data/elephant.off", elephant);
+  const Dual_graph graph = make_dual_graph(elephant);
+  const std::vector<double> weights = Metrics::Part_aware_weight<>()(graph);
+  const Weighted_dual_graph weighted(graph, weights);
+  check(graph, weighted, 3, 20, Embedding::Method::nystrom, false);
+  // both kinds of candidate won somewhere, so the comparisons are not vacuous
+  CHECK(kept_contrast);
+  CHECK(kept_concave);
 }

@@ -67,6 +67,18 @@ struct Basic_K_way_options
   /// creases. Default {8}: two over-segmentations, 2 and 8 extra clusters.
   /// Empty: `extra_clusters` only, at the cost of one segmentation.
   std::vector<std::size_t> alternative_extra_clusters{8};
+  /// the contrast merge as one more over-segmentation to choose from (our
+  /// addition): when positive, the mesh is also over-segmented into this
+  /// many K-means clusters (at least `k`), split along concave creases and
+  /// merged by contrast down to `k` segments, as `segment_hybrid()` does
+  /// with as many clusters (its merge hierarchy cut at `k` parts), then
+  /// refined by the graph cut; it is kept when its
+  /// `Refinement::concave_normalized_cut()` is the lowest. The two merge
+  /// orders fail on different shapes: the concave strength keeps a part
+  /// whose junction is a crease, the contrast (concavity, metric and neck
+  /// ratio) one that meets the body along a short loop without a crease.
+  /// Default 20, `segment_hybrid()`'s; 0: not tried (the thesis's method)
+  std::size_t contrast_merge_clusters = 20;
   /// the concavity scale \f$s\f$ (radians) of the normalized cut that
   /// chooses the over-segmentation
   double cut_angle_scale = 0.1;
@@ -108,6 +120,7 @@ struct Basic_K_way_options
     Basic_K_way_options o;
     o.extra_clusters = 0;
     o.alternative_extra_clusters.clear();
+    o.contrast_merge_clusters = 0;
     o.graph_cut = Refinement::Graph_cut_options();
     o.crease_angle = 0.;
     o.merge_size_exponent = 0.;
@@ -128,6 +141,7 @@ struct Basic_K_way_options
     o.seed_with_samples = seed_with_samples;
     o.extra_clusters = extra_clusters;
     o.alternative_extra_clusters = alternative_extra_clusters;
+    o.contrast_merge_clusters = contrast_merge_clusters;
     o.cut_angle_scale = cut_angle_scale;
     o.merge_strength_limit = merge_strength_limit;
     o.merge_min_area_fraction = merge_min_area_fraction;
@@ -189,6 +203,9 @@ struct K_way_result
   /// the number of extra clusters of the kept over-segmentation (see
   /// `K_way_options::alternative_extra_clusters`)
   std::size_t extra_clusters = 0;
+  /// whether the kept over-segmentation is the contrast merge's
+  /// (`K_way_options::contrast_merge_clusters`)
+  bool contrast_merge = false;
   /// its `Refinement::concave_normalized_cut()` when several were tried,
   /// else 0
   double normalized_cut = 0.;

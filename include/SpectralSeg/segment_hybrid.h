@@ -17,6 +17,7 @@
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/Stage_timer.h>
+#include <SpectralSeg/internal/merge_by_contrast.h>
 #include <SpectralSeg/segment_k_way.h>
 
 #include <algorithm>
@@ -44,8 +45,8 @@ struct Basic_hybrid_options
   /// clusters are split along closed loops of concave creases of at least
   /// this many degrees before the merge, as in `segment_k_way()`; 0: no
   /// split, the contrast merge until 2026-11-25); `extra_clusters`,
-  /// `alternative_extra_clusters`, `merge_strength_limit` and
-  /// `merge_size_exponent` are not used
+  /// `alternative_extra_clusters`, `contrast_merge_clusters`,
+  /// `merge_strength_limit` and `merge_size_exponent` are not used
   Basic_K_way_options<AffinityKernel> k_way;
   /// the number of K-means clusters of the over-segmentation (default 20);
   /// at least 2
@@ -70,7 +71,7 @@ struct Basic_hybrid_options
   /// part (a head into face and back), and the metric contrast is also
   /// multiplied by \f$(o/\ell)^2\f$. Neither ratio depends on the mesh's
   /// scale or resolution. At least 0
-  double neck_scale = 0.4;
+  double neck_scale = internal::default_neck_scale;
   /// when positive, the answer has this many parts (or as many as the
   /// over-segmentation has, if fewer): the merge hierarchy
   /// (`K_way_result::hierarchy`) cut at that number instead of where
@@ -84,67 +85,6 @@ struct Basic_hybrid_options
 /// default.
 typedef Basic_hybrid_options<Kernels::Exponential_kernel> Hybrid_options;
 
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-// Merges adjacent segments, weakest boundary first: segments under
-// `small` area first (smallest first, whatever their boundary), then the
-// pair with the lowest product of the two contrasts while their geometric
-// mean (the boundary's contrast) is below `limit` and more than
-// `min_segments` are left (with a positive
-// `neck_scale` the metric contrast is multiplied by the pair's neck ratio
-// over `neck_scale` and by its slice ratio squared); with
-// `separation.coordinates` the pairs are taken in the order of that product
-// times the embedding-separation factor (the limit still applies to the
-// contrast alone). Labels renumbered by their smallest face; returns the
-// number of segments; with `history`, every merge down to one segment per
-// component is recorded there (Refinement::internal::merge_cheapest_boundaries()).
-inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
-                                     std::vector<int>& labels, std::size_t min_segments, double limit,
-                                     double min_area_fraction,
-                                     const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
-                                     double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr)
-{
-  // mesh means, weighted by edge length
-  double length = 0., concave = 0., metric = 0.;
-  for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
-  {
-    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
-    length += e.length;
-    concave += e.concave ? e.length * e.normal_angle : 0.;
-    metric += e.length * weights[d];
-  }
-  const double mean_concave = length > 0. ? concave / length : 0.;
-  const double mean_metric = length > 0. ? metric / length : 0.;
-  double total_area = 0.;
-  for(double a : graph.geometry().areas)
-    total_area += a;
-  // a flat or convex mesh (or a zero metric) gives no contrast: such
-  // boundaries are weak
-  return Refinement::internal::merge_cheapest_boundaries(
-    graph, weights, labels, min_segments, min_area_fraction, limit,
-    [&](const Refinement::internal::Segment_boundary& x, double smaller, double r, double outer) {
-      const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
-      double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
-      if(neck_scale > 0.) // the neck ratio: large around a limb, small across a slice of a body
-        m *= std::sqrt(smaller * total_area) / x.length / neck_scale;
-      // the slice ratio: a boundary longer than the loop along which the
-      // two segments together meet the others cuts through one part (a
-      // head cut into face and back, a cup's body lengthwise)
-      if(neck_scale > 0. && outer > 0. && outer < x.length)
-        m *= (outer / x.length) * (outer / x.length);
-      // the order, not the limit, follows the separation (r is infinite
-      // without coordinates)
-      const double order = r < separation.scale ? c * m * std::pow(r / separation.scale, separation.exponent) : c * m;
-      return Refinement::internal::Merge_cost{order, std::sqrt(c * m)};
-    },
-    separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0 ? separation.coordinates
-                                                                                            : nullptr,
-    history);
-}
-
-} // namespace internal
-/// \endcond
 
 /// \ingroup PkgSpectralSegAutomatic
 /// \brief Segments the faces of a weighted dual graph into a number of parts
@@ -243,45 +183,16 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   exec.report("k-means", 1.);
   lap("k-means");
   r.labels = r.clusters.labels;
-  if(options.k_way.crease_angle > 0.)
-  {
-    std::vector<int> region;
-    if(Refinement::crease_regions(graph.graph(), options.k_way.crease_angle, region) > 1)
-      Refinement::split_along_regions(region, r.labels);
-  }
-  Refinement::make_segments_connected(graph.graph(), r.labels);
-  Refinement::Embedding_separation separation;
-  if(options.k_way.merge_separation_scale > 0.)
-  {
-    separation.coordinates = &r.embedding.coordinates;
-    separation.scale = options.k_way.merge_separation_scale;
-    separation.exponent = internal::separation_exponent(Refinement::sharp_crease_share(graph.graph()));
-  }
-  Refinement::internal::Merge_history history;
-  std::size_t m = internal::merge_by_contrast(graph.graph(), graph.weights(), r.labels, options.min_segments,
-                                              options.min_boundary_contrast, options.k_way.merge_min_area_fraction,
-                                              separation, options.neck_scale, &history);
-  r.hierarchy =
-    internal::hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+  std::size_t m = internal::merge_clusters_by_contrast(graph, options.k_way, options.min_segments,
+                                                       options.min_boundary_contrast, options.neck_scale, r);
   if(options.parts > 0)
   {
     r.labels = r.hierarchy.labels_with_parts(options.parts);
     m = r.labels.empty() ? 0 : std::size_t(*std::max_element(r.labels.begin(), r.labels.end()) + 1);
   }
   lap("merge");
-  // with more segments than clusters (a mesh of many connected components)
-  // a graph cut on that many labels would crawl: it is skipped there
-  if(options.k_way.boundary_enhancement && m > 1 && m <= clusters)
-  {
-    exec.report("graph cut", 0.);
-    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates,
-                                     internal::mean_proxies(r.embedding.coordinates, r.labels, m), r.labels,
-                                     options.k_way.graph_cut);
-    exec.report("graph cut", 1.);
-    lap("graph cut");
-  }
-  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
-  lap("connected segments");
+  internal::graph_cut_merged(graph, m, clusters, options.k_way, r, exec);
+  lap("graph cut");
   return r;
 }
 

@@ -19,11 +19,13 @@
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/Stage_timer.h>
+#include <SpectralSeg/internal/merge_by_contrast.h>
 
 #include <algorithm>
 #include <atomic>
 #include <functional>
 #include <future>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -66,14 +68,6 @@ void kmeans_clusters(std::size_t k, const Basic_K_way_options<AffinityKernel>& o
   lap("k-means");
 }
 
-// The exponent of the merge's embedding-separation factor for a mesh whose
-// sharp_crease_share() is `share` (see K_way_options::merge_separation_scale):
-// 1 up to 0.3, 0 from 0.6, linear in between.
-inline double separation_exponent(double share)
-{
-  return std::max(0., std::min(1., (0.6 - share) / 0.3));
-}
-
 // The mean embedding coordinates of each of the `m` segments of `labels`
 // (one row per segment), the proxies of the graph cut after a merge.
 inline Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const std::vector<int>& labels, std::size_t m)
@@ -90,6 +84,25 @@ inline Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const st
   return proxies;
 }
 
+// The `m` merged segments of `r.labels` (at most `clusters`, else a graph
+// cut on that many labels would crawl, a mesh of many connected
+// components: then skipped) refined by the graph cut with their mean
+// embedding coordinates as proxies (when `options.boundary_enhancement`),
+// then made connected.
+template <typename AffinityKernel>
+void graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size_t clusters,
+                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, const Execution& exec)
+{
+  if(options.boundary_enhancement && m > 1 && m <= clusters)
+  {
+    exec.report("graph cut", 0.);
+    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates,
+                                     mean_proxies(r.embedding.coordinates, r.labels, m), r.labels, options.graph_cut);
+    exec.report("graph cut", 1.);
+  }
+  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+}
+
 // The answer of a merge method cut at `parts` parts in its hierarchy
 // instead: the labels of the hierarchy's first cuts, boundaries smoothed by
 // the graph cut (when `graph_cut` and at most `clusters` segments) and
@@ -100,14 +113,7 @@ void cut_hierarchy(const Weighted_dual_graph& graph, std::size_t parts, std::siz
 {
   r.labels = r.hierarchy.labels_with_parts(parts);
   const std::size_t m = r.labels.empty() ? 0 : std::size_t(*std::max_element(r.labels.begin(), r.labels.end()) + 1);
-  if(options.boundary_enhancement && m > 1 && m <= clusters)
-  {
-    exec.report("graph cut", 0.);
-    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates,
-                                     mean_proxies(r.embedding.coordinates, r.labels, m), r.labels, options.graph_cut);
-    exec.report("graph cut", 1.);
-  }
-  r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+  graph_cut_merged(graph, m, clusters, options, r, exec);
 }
 
 // Merge (when over-segmented), graph cut and connected segments on the k
@@ -259,7 +265,7 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   for(std::size_t e : options.alternative_extra_clusters)
     if(std::find(extras.begin(), extras.end(), e) == extras.end())
       extras.push_back(e);
-  if(extras.size() == 1)
+  if(extras.size() == 1 && options.contrast_merge_clusters == 0)
   {
     r.embedding = internal::embed(graph, dimensions_of(options.extra_clusters), options.kernel, options.embedding, exec);
     lap("embedding");
@@ -270,9 +276,24 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   }
 
   // Several over-segmentations, each in full; the lowest concave normalized
-  // cut is kept, ties to the first tried.
-  std::vector<K_way_result> candidates(extras.size());
-  std::vector<std::vector<std::pair<std::string, double>>> times(extras.size());
+  // cut is kept, ties to the first tried. Each is one embedding's
+  // dimensions and K-means clusters, merged weakest boundary first or, the
+  // last with `contrast_merge_clusters`, by contrast.
+  struct Candidate
+  {
+    std::size_t dimensions, clusters;
+    bool contrast;
+  };
+  std::vector<Candidate> specs;
+  for(std::size_t e : extras)
+    specs.push_back(Candidate{dimensions_of(e), clusters_of(e), false});
+  if(options.contrast_merge_clusters > 0)
+  {
+    const std::size_t d = std::min(std::max(options.contrast_merge_clusters, k), n - 1);
+    specs.push_back(Candidate{d, std::max(k, d), true});
+  }
+  std::vector<K_way_result> candidates(specs.size());
+  std::vector<std::vector<std::pair<std::string, double>>> times(specs.size());
   const Embedding::Embedding_options& eo = options.embedding;
   // Nyström with farthest-point samples: the samples are nested, so the
   // samples and distance rows of the most clusters serve every candidate.
@@ -283,29 +304,28 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   if(share)
   {
     std::size_t largest = 0;
-    for(std::size_t e : extras)
-      largest = std::max(largest, dimensions_of(e));
+    for(const Candidate& c : specs)
+      largest = std::max(largest, c.dimensions);
     shared = Embedding::internal::nystrom_rows(graph, largest + 1, options.kernel, eo, exec);
     lap("embedding");
   }
   // The stages that use every thread (embedding, K-means) for one
   // candidate after the other, then the mostly sequential ones (merge,
-  // max-flow) side by side, the threads shared between the candidates: the
-  // first of each group on this thread, reporting progress to `exec`, the
-  // others on threads of their own, which stop when this one throws. A
-  // candidate's result does not depend on where, or on how many threads,
-  // it ran.
-  for(std::size_t i = 0; i < extras.size(); ++i)
+  // max-flow) side by side: each thread takes the next candidate not yet
+  // taken, the threads shared between them; this thread reports progress to
+  // `exec`, the others stop when it throws. A candidate's result does not
+  // depend on where, or on how many threads, it ran.
+  for(std::size_t i = 0; i < specs.size(); ++i)
   {
     internal::Stage_timer t(times[i], true);
     K_way_result& c = candidates[i];
-    const std::size_t dimensions = dimensions_of(extras[i]);
+    const std::size_t dimensions = specs[i].dimensions;
     if(share)
     {
       // the candidate's leading rows, turned into affinities: the last
       // candidate takes the rows themselves when it needs them all
       const auto l = static_cast<Eigen::Index>(dimensions + 1);
-      Embedding::internal::Row_matrix w = i + 1 == extras.size() && l == shared.distances.rows()
+      Embedding::internal::Row_matrix w = i + 1 == specs.size() && l == shared.distances.rows()
                                             ? std::move(shared.distances)
                                             : Embedding::internal::Row_matrix(shared.distances.topRows(l));
       const double width = Embedding::internal::distances_to_affinities(w, options.kernel, exec);
@@ -316,21 +336,32 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     else
       c.embedding = internal::embed(graph, dimensions, options.kernel, eo, exec);
     t("embedding");
-    internal::kmeans_clusters(clusters_of(extras[i]), options, c, t, exec);
+    internal::kmeans_clusters(specs[i].clusters, options, c, t, exec);
   }
   shared = Embedding::internal::Nystrom_rows(); // no longer needed
   const auto refine = [&](std::size_t i, const Execution& x) {
     internal::Stage_timer t(times[i], true);
     K_way_result& c = candidates[i];
-    internal::refine_clusters(graph, clusters_of(extras[i]), k, options, c, t, x);
-    c.extra_clusters = clusters_of(extras[i]) - k;
+    if(specs[i].contrast)
+    {
+      // the contrast merge down to k segments: its hierarchy cut at k
+      const std::size_t m = internal::merge_clusters_by_contrast(
+        graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale, c);
+      t("merge");
+      internal::graph_cut_merged(graph, m, specs[i].clusters, options, c, x);
+      t("graph cut");
+      c.contrast_merge = true;
+    }
+    else
+      internal::refine_clusters(graph, specs[i].clusters, k, options, c, t, x);
+    c.extra_clusters = specs[i].clusters - k;
     c.normalized_cut = Refinement::concave_normalized_cut(graph.graph(), c.labels, options.cut_angle_scale);
     t("choice");
   };
-  for(std::size_t first = 0; first < extras.size(); first += exec.threads())
   {
-    const std::size_t last = std::min<std::size_t>(first + exec.threads(), extras.size());
-    const unsigned threads = std::max(1u, exec.threads() / unsigned(last - first));
+    const std::size_t workers = std::min<std::size_t>(exec.threads(), specs.size());
+    const unsigned threads = std::max(1u, exec.threads() / unsigned(workers));
+    std::atomic<std::size_t> next(0);
     std::atomic<bool> stop(false);
     const Execution here = !exec.has_progress() ? Execution(threads)
                            : Execution(threads, [&exec](const std::string& stage, double fraction) {
@@ -338,12 +369,16 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
                                return true;
                              });
     const Execution other(threads, [&stop](const std::string&, double) { return !stop.load(); });
+    const auto work = [&](const Execution& x) {
+      for(std::size_t i = next++; i < specs.size() && !stop.load(); i = next++)
+        refine(i, x);
+    };
     std::vector<std::future<void>> others;
     try
     {
-      for(std::size_t i = first + 1; i < last; ++i)
-        others.push_back(std::async(std::launch::async, refine, i, std::cref(other)));
-      refine(first, here);
+      for(std::size_t w = 1; w < workers; ++w)
+        others.push_back(std::async(std::launch::async, work, std::cref(other)));
+      work(here);
       for(auto& f : others)
         f.get(); // rethrows a candidate's exception
     }
@@ -414,6 +449,7 @@ K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph,
   Basic_K_way_options<AffinityKernel> o = options.k_way;
   o.extra_clusters = options.max_k - 2;
   o.alternative_extra_clusters.clear();
+  o.contrast_merge_clusters = 0;
   // the mesh's mean concave angle, each dual edge counted with its length
   const std::vector<double> w = Refinement::concave_angle_weights(graph.graph());
   double sum = 0., length = 0.;

@@ -107,7 +107,7 @@ class KWay(unittest.TestCase):
         v, f = Mesh.get()
         default = spectralseg.k_way_segmentation(v, f, 5)
         thesis = spectralseg.k_way_segmentation(v, f, 5, extra_clusters=0, alternative_extra_clusters=[],
-                                                normalization="max")
+                                                contrast_merge_clusters=0, normalization="max")
         geodesic = spectralseg.k_way_segmentation(v, f, 5, metric="geodesic", boundary_enhancement=False)
         self.assertFalse(np.array_equal(default, thesis))
         self.assertFalse(np.array_equal(default, geodesic))
@@ -244,6 +244,8 @@ class SameAsCommandLine(unittest.TestCase):
                             "--alternative-extra-clusters", "none"])
         labels = spectralseg.k_way_segmentation(v, f, 4, extra_clusters=1, alternative_extra_clusters=[5, 3])
         self.check(labels, ["--k", "4", "--extra-clusters", "1", "--alternative-extra-clusters", "5,3"])
+        labels = spectralseg.k_way_segmentation(v, f, 4, contrast_merge_clusters=0)
+        self.check(labels, ["--k", "4", "--contrast-merge-clusters", "0"])
 
     def test_automatic(self):
         v, f = Mesh.get()

@@ -84,7 +84,7 @@ inline void check_segmentation_fits(std::size_t faces, std::size_t clusters, con
 {
   if(clusters > max_clusters)
     throw SpectralSeg::Invalid_input("k-way segmentation into " + std::to_string(clusters) +
-                                     " clusters (k plus --extra-clusters or --alternative-extra-clusters, or --max-k): at most " +
+                                     " clusters (k plus --extra-clusters or --alternative-extra-clusters, --contrast-merge-clusters, or --max-k): at most " +
                                      std::to_string(max_clusters) +
                                      " are supported (K-means and the graph cut grow with their square)");
   const Segment_plan p = plan_segmentation(faces, clusters, sampling, samples, exact_face_limit);

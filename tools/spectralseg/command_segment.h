@@ -42,6 +42,7 @@ struct Segment_options
   // the library's defaults, set by the constructor (segmentation_methods.cpp)
   std::size_t extra_clusters = 0;
   std::vector<std::size_t> alternative_extra_clusters;
+  std::size_t contrast_merge_clusters = 0;
   std::string graph_cut = "banded";
   double crease_angle = 0.;
   double merge_size_exponent = 0.;
@@ -112,7 +113,8 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
   cmd->add_option("--seed", o.seed, "seed of the sampling's start face")->capture_default_str()->check(Count(0, UINT32_MAX));
   cmd->add_option("--extra-clusters", o.extra_clusters,
                   "K-means makes k + N clusters, then the segments with the weakest (least concave) boundaries "
-                  "are merged until k are left (0, with --alternative-extra-clusters none: the thesis's method)")->capture_default_str()->check(Count(0, max_clusters));
+                  "are merged until k are left (0, with --alternative-extra-clusters none and --contrast-merge-clusters 0: the "
+                  "thesis's method)")->capture_default_str()->check(Count(0, max_clusters));
   const CLI::Validator count = Count(0, max_clusters);
   cmd
     ->add_option_function<std::vector<std::string>>(
@@ -127,11 +129,17 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
       },
       "other numbers of extra clusters to try besides --extra-clusters (comma-separated, default 8): each is a "
       "whole segmentation, and the one whose boundaries best follow concave creases (lowest concave normalized "
-      "cut) is kept; 'none': one segmentation only, about 20% faster")
+      "cut) is kept (see also --contrast-merge-clusters); 'none': one segmentation fewer")
     ->delimiter(',')
     ->check(CLI::Validator(
       [count](std::string& text) { return text == "none" ? std::string() : count(text); },
       "INT in [0, " + std::to_string(max_clusters) + "] or 'none'"));
+  cmd->add_option("--contrast-merge-clusters", o.contrast_merge_clusters,
+                  "one more segmentation to choose from, in the same way: K-means makes this many clusters (at "
+                  "least k), merged by contrast down to k as --k auto does (its hierarchy cut at k parts); 0: not "
+                  "tried")
+    ->capture_default_str()
+    ->check(Count(0, max_clusters));
   add_salient_cut_options(*cmd, o.salient);
 }
 
@@ -172,13 +180,14 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
   if(salient)
     ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--kernel", "--sampling",
              "--samples", "--seed", "--no-graph-cut", "--graph-cut", "--crease-angle", "--graph-cut-backend",
-             "--extra-clusters", "--alternative-extra-clusters", "--max-k",
+             "--extra-clusters", "--alternative-extra-clusters", "--contrast-merge-clusters", "--max-k",
              "--min-boundary-contrast"},
             "--auto-method salient-cuts uses none of the k-way options");
   else
   {
     if(automatic)
-      ignored({"--extra-clusters", "--alternative-extra-clusters"}, "--k auto over-segments into --max-k clusters itself");
+      ignored({"--extra-clusters", "--alternative-extra-clusters", "--contrast-merge-clusters"},
+              "--k auto over-segments into --max-k clusters itself");
     if(o.sampling == "exact")
       ignored({"--samples", "--seed"}, "it sets the Nyström sampling, and --sampling exact takes no samples");
     if(o.no_graph_cut)

@@ -40,6 +40,7 @@ Segment_options::Segment_options()
   const SpectralSeg::K_way_options k_way;
   extra_clusters = k_way.extra_clusters;
   alternative_extra_clusters = k_way.alternative_extra_clusters;
+  contrast_merge_clusters = k_way.contrast_merge_clusters;
   crease_angle = k_way.crease_angle;
   merge_size_exponent = k_way.merge_size_exponent;
   merge_separation = k_way.merge_separation_scale;
@@ -190,7 +191,10 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
   std::size_t most_extra = o.extra_clusters;
   for(std::size_t e : o.alternative_extra_clusters)
     most_extra = std::max(most_extra, e);
-  check_segmentation_fits(n, k == 0 ? std::min(o.max_k, n - 1) : std::min(k + most_extra, n - 1), o.sampling,
+  check_segmentation_fits(n,
+                          k == 0 ? std::min(o.max_k, n - 1)
+                                 : std::min(std::max(k + most_extra, o.contrast_merge_clusters), n - 1),
+                          o.sampling,
                           o.samples, SpectralSeg::Embedding::Embedding_options().exact_face_limit);
   const auto started = std::chrono::steady_clock::now();
   const SpectralSeg::Metrics::Any_weight metric = make_metric(o.metric);
@@ -209,6 +213,7 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
   options.embedding.seed = o.seed;
   options.extra_clusters = o.extra_clusters;
   options.alternative_extra_clusters = o.alternative_extra_clusters;
+  options.contrast_merge_clusters = o.contrast_merge_clusters;
   options.boundary_enhancement = !o.no_graph_cut;
   if(o.graph_cut == "thesis")
     options.graph_cut = SpectralSeg::Refinement::Graph_cut_options();
@@ -270,8 +275,11 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
   report["kernel_width"] = r.embedding.kernel_width;
   report["graph_cut"] = !o.no_graph_cut;
   if(k > 0)
-    report["extra_clusters"] = r.extra_clusters; // the kept over-segmentation's
-  if(k > 0 && !o.alternative_extra_clusters.empty())
+  { // the kept over-segmentation's
+    report["extra_clusters"] = r.extra_clusters;
+    report["merge"] = r.contrast_merge ? "contrast" : "concave";
+  }
+  if(k > 0 && (!o.alternative_extra_clusters.empty() || o.contrast_merge_clusters > 0))
     report["concave_normalized_cut"] = r.normalized_cut;
   if(r.embedding.exact && o.sampling == "auto")
     for(const char* option : {"--samples", "--seed"})

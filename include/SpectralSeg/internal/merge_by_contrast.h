@@ -1,0 +1,132 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file merge_by_contrast.h
+/// \brief The contrast merge of `segment_hybrid()` (internal): over-segmented
+/// clusters merged by concave and metric contrast, shared with the
+/// contrast-merge candidate of `segment_k_way()`.
+#ifndef SPECTRALSEG_INTERNAL_MERGE_BY_CONTRAST_H
+#define SPECTRALSEG_INTERNAL_MERGE_BY_CONTRAST_H
+
+#include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/K_way_options.h>
+#include <SpectralSeg/Part_hierarchy.h>
+#include <SpectralSeg/Refinement/connected_segments.h>
+#include <SpectralSeg/Refinement/crease_regions.h>
+#include <SpectralSeg/Refinement/merge_segments.h>
+#include <SpectralSeg/Refinement/sharp_crease_share.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+/// \cond SKIP_IN_MANUAL
+namespace SpectralSeg {
+namespace internal {
+
+// The neck ratio's scale of the contrast merge (Basic_hybrid_options::neck_scale).
+constexpr double default_neck_scale = 0.4;
+
+// The exponent of the merge's embedding-separation factor for a mesh whose
+// sharp_crease_share() is `share` (see K_way_options::merge_separation_scale):
+// 1 up to 0.3, 0 from 0.6, linear in between.
+inline double separation_exponent(double share)
+{
+  return std::max(0., std::min(1., (0.6 - share) / 0.3));
+}
+
+// Merges adjacent segments, weakest boundary first: segments under
+// `small` area first (smallest first, whatever their boundary), then the
+// pair with the lowest product of the two contrasts while their geometric
+// mean (the boundary's contrast) is below `limit` and more than
+// `min_segments` are left (with a positive
+// `neck_scale` the metric contrast is multiplied by the pair's neck ratio
+// over `neck_scale` and by its slice ratio squared); with
+// `separation.coordinates` the pairs are taken in the order of that product
+// times the embedding-separation factor (the limit still applies to the
+// contrast alone). Labels renumbered by their smallest face; returns the
+// number of segments; with `history`, every merge down to one segment per
+// component is recorded there (Refinement::internal::merge_cheapest_boundaries()).
+inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
+                                     std::vector<int>& labels, std::size_t min_segments, double limit,
+                                     double min_area_fraction,
+                                     const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
+                                     double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr)
+{
+  // mesh means, weighted by edge length
+  double length = 0., concave = 0., metric = 0.;
+  for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
+  {
+    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
+    length += e.length;
+    concave += e.concave ? e.length * e.normal_angle : 0.;
+    metric += e.length * weights[d];
+  }
+  const double mean_concave = length > 0. ? concave / length : 0.;
+  const double mean_metric = length > 0. ? metric / length : 0.;
+  double total_area = 0.;
+  for(double a : graph.geometry().areas)
+    total_area += a;
+  // a flat or convex mesh (or a zero metric) gives no contrast: such
+  // boundaries are weak
+  return Refinement::internal::merge_cheapest_boundaries(
+    graph, weights, labels, min_segments, min_area_fraction, limit,
+    [&](const Refinement::internal::Segment_boundary& x, double smaller, double r, double outer) {
+      const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
+      double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
+      if(neck_scale > 0.) // the neck ratio: large around a limb, small across a slice of a body
+        m *= std::sqrt(smaller * total_area) / x.length / neck_scale;
+      // the slice ratio: a boundary longer than the loop along which the
+      // two segments together meet the others cuts through one part (a
+      // head cut into face and back, a cup's body lengthwise)
+      if(neck_scale > 0. && outer > 0. && outer < x.length)
+        m *= (outer / x.length) * (outer / x.length);
+      // the order, not the limit, follows the separation (r is infinite
+      // without coordinates)
+      const double order = r < separation.scale ? c * m * std::pow(r / separation.scale, separation.exponent) : c * m;
+      return Refinement::internal::Merge_cost{order, std::sqrt(c * m)};
+    },
+    separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0 ? separation.coordinates
+                                                                                            : nullptr,
+    history);
+}
+
+// The contrast merge of segment_hybrid() on `r.labels`, the K-means
+// clusters of `r.embedding`: the clusters split along closed loops of
+// concave creases (`k_way.crease_angle`), made connected and merged by
+// contrast (merge_by_contrast(), with `k_way`'s minimum area fraction and
+// separation scale); every merge down to one segment per component goes
+// into `r.hierarchy`, whose answer is where `limit` or `min_segments` stops
+// the merge, as are `r.labels`. Returns the number of segments there.
+template <typename AffinityKernel>
+std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
+                                       const Basic_K_way_options<AffinityKernel>& k_way, std::size_t min_segments,
+                                       double limit, double neck_scale, K_way_result& r)
+{
+  if(k_way.crease_angle > 0.)
+  {
+    std::vector<int> region;
+    if(Refinement::crease_regions(graph.graph(), k_way.crease_angle, region) > 1)
+      Refinement::split_along_regions(region, r.labels);
+  }
+  Refinement::make_segments_connected(graph.graph(), r.labels);
+  Refinement::Embedding_separation separation;
+  if(k_way.merge_separation_scale > 0.)
+  {
+    separation.coordinates = &r.embedding.coordinates;
+    separation.scale = k_way.merge_separation_scale;
+    separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
+  }
+  Refinement::internal::Merge_history history;
+  const std::size_t m = merge_by_contrast(graph.graph(), graph.weights(), r.labels, min_segments, limit,
+                                          k_way.merge_min_area_fraction, separation, neck_scale, &history);
+  r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+  return m;
+}
+
+} // namespace internal
+} // namespace SpectralSeg
+/// \endcond
+
+#endif // SPECTRALSEG_INTERNAL_MERGE_BY_CONTRAST_H
