@@ -140,15 +140,14 @@ private:
     const std::size_t nf = geometry_.number_of_faces();
     edges_.clear();
     edges_.reserve(adjacencies.size());
-    std::vector<std::pair<size_type, size_type>> arcs;
-    std::vector<Arc> arc_props;
-    std::vector<std::tuple<size_type, size_type, size_type>> sorted;
-    sorted.reserve(2 * adjacencies.size());
+    // the arcs (both directions of each edge) in the order of (source,
+    // target, edge): counted per source face, then each face's few arcs
+    // sorted (a counting sort, linear in the number of edges)
+    std::vector<std::size_t> first(nf + 1, 0);
     for(const Adjacency& a : adjacencies)
     {
       if(a.f0 >= nf || a.f1 >= nf || a.f0 == a.f1)
         throw Invalid_input("invalid face adjacency (" + std::to_string(a.f0) + ", " + std::to_string(a.f1) + ")");
-      const size_type e = static_cast<size_type>(edges_.size());
       Edge edge;
       edge.face[0] = a.f0;
       edge.face[1] = a.f1;
@@ -157,16 +156,29 @@ private:
       edge.contact = a.contact_length > 0.;
       edge.length = a.contact_length;
       edges_.push_back(edge);
-      sorted.emplace_back(a.f0, a.f1, e);
-      sorted.emplace_back(a.f1, a.f0, e);
+      ++first[a.f0 + 1];
+      ++first[a.f1 + 1];
     }
-    std::sort(sorted.begin(), sorted.end());
-    arcs.reserve(sorted.size());
-    arc_props.reserve(sorted.size());
-    for(const auto& t : sorted)
+    for(std::size_t f = 0; f < nf; ++f)
+      first[f + 1] += first[f];
+    std::vector<std::pair<size_type, size_type>> arcs(first[nf]); // (target, edge), then (source, target)
     {
-      arcs.emplace_back(std::get<0>(t), std::get<1>(t));
-      arc_props.push_back(Arc{std::get<2>(t)});
+      std::vector<std::size_t> next(first.begin(), first.end() - 1);
+      for(size_type e = 0; e < static_cast<size_type>(edges_.size()); ++e)
+      {
+        arcs[next[edges_[e].face[0]]++] = {edges_[e].face[1], e};
+        arcs[next[edges_[e].face[1]]++] = {edges_[e].face[0], e};
+      }
+    }
+    std::vector<Arc> arc_props(arcs.size());
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      std::sort(arcs.begin() + std::ptrdiff_t(first[f]), arcs.begin() + std::ptrdiff_t(first[f + 1]));
+      for(std::size_t i = first[f]; i < first[f + 1]; ++i)
+      {
+        arc_props[i] = Arc{arcs[i].second};
+        arcs[i] = {static_cast<size_type>(f), arcs[i].first};
+      }
     }
     csr_ = Csr(boost::edges_are_sorted, arcs.begin(), arcs.end(), arc_props.begin(),
                static_cast<size_type>(nf));
