@@ -214,10 +214,15 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 ///
 /// With `options.alternative_extra_clusters` ({8} by default, empty for
 /// the thesis's method), steps 1-5 are also run with each of those numbers
-/// of extra clusters, and the result with the lowest
-/// `Refinement::concave_normalized_cut()` is kept (ties to
+/// of extra clusters; with `options.contrast_merge_clusters` (20 by
+/// default, 0 for the thesis's method) the mesh is also over-segmented into
+/// that many clusters (at least \f$k\f$) and merged down to \f$k\f$ by
+/// contrast as in `segment_hybrid()`, then cut (steps 4-5). Of all these
+/// candidates the one with the lowest
+/// `Refinement::concave_normalized_cut()` is kept (ties to the first tried,
 /// `extra_clusters`): its boundaries follow concave creases best.
-/// `K_way_result::extra_clusters` says which was kept. The Nyström
+/// `K_way_result::extra_clusters` and `K_way_result::contrast_merge` say
+/// which was kept. The Nyström
 /// farthest-point samples are nested, so the samples and distance rows of
 /// the largest count serve every candidate; with several threads the
 /// candidates' merges and graph cuts run side by side. The result does not
