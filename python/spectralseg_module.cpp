@@ -613,6 +613,11 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
   d["samples"] = out.r.embedding.samples;
   d["kernel_width"] = out.r.embedding.kernel_width;
   d["graph_cut"] = boundary_enhancement;
+  // the kept over-segmentation, as in the tool's JSON report
+  d["extra_clusters"] = out.r.extra_clusters;
+  d["merge"] = out.r.contrast_merge ? "contrast" : "concave";
+  if(!ks.options.alternative_extra_clusters.empty() || ks.options.contrast_merge_clusters > 0)
+    d["concave_normalized_cut"] = out.r.normalized_cut;
   return labels_result(*out.m, out.r.labels, d, report);
 }
 

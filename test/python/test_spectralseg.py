@@ -91,6 +91,10 @@ class KWay(unittest.TestCase):
         self.assertEqual(report["threads"], 2)
         self.assertEqual(report["metric"], "part-aware")
         self.assertEqual(report["embedding"], "nystrom")
+        self.assertIn(report["merge"], ("concave", "contrast"))
+        # the kept over-segmentation: 20 clusters merged by contrast, or 4 + 2 or 4 + 8 by concave strength
+        self.assertIn(report["extra_clusters"], (16,) if report["merge"] == "contrast" else (2, 8))
+        self.assertGreaterEqual(report["concave_normalized_cut"], 0)
         self.assertIn("metric", report["timings"])
         self.assertIn("graph cut", report["timings"])
         self.assertGreater(report["timings"]["total"], 0)
