@@ -191,8 +191,7 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     m = r.labels.empty() ? 0 : std::size_t(*std::max_element(r.labels.begin(), r.labels.end()) + 1);
   }
   lap("merge");
-  internal::graph_cut_merged(graph, m, clusters, options.k_way, r, exec);
-  lap("graph cut");
+  internal::graph_cut_merged(graph, m, clusters, options.k_way, r, exec, &lap);
   return r;
 }
 

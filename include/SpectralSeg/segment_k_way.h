@@ -88,10 +88,12 @@ inline Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const st
 // cut on that many labels would crawl, a mesh of many connected
 // components: then skipped) refined by the graph cut with their mean
 // embedding coordinates as proxies (when `options.boundary_enhancement`),
-// then made connected.
+// then made connected; with `lap`, the stages timed as "graph cut" (when it
+// ran) and "connected segments".
 template <typename AffinityKernel>
 void graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size_t clusters,
-                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, const Execution& exec)
+                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, const Execution& exec,
+                      Stage_timer* lap = nullptr)
 {
   if(options.boundary_enhancement && m > 1 && m <= clusters)
   {
@@ -99,8 +101,12 @@ void graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size
     Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates,
                                      mean_proxies(r.embedding.coordinates, r.labels, m), r.labels, options.graph_cut);
     exec.report("graph cut", 1.);
+    if(lap)
+      (*lap)("graph cut");
   }
   r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
+  if(lap)
+    (*lap)("connected segments");
 }
 
 // The answer of a merge method cut at `parts` parts in its hierarchy
@@ -353,8 +359,7 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       const std::size_t m = internal::merge_clusters_by_contrast(
         graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale, c);
       t("merge");
-      internal::graph_cut_merged(graph, m, specs[i].clusters, options, c, x);
-      t("graph cut");
+      internal::graph_cut_merged(graph, m, specs[i].clusters, options, c, x, &t);
       c.contrast_merge = true;
     }
     else
