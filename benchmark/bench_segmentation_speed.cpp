@@ -77,6 +77,7 @@
 #include <malloc.h>
 #endif
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -84,6 +85,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -308,6 +310,7 @@ int main(int argc, char** argv)
   // for every method, CGAL's included
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  mallopt(M_ARENA_MAX, int(std::max(1u, std::thread::hardware_concurrency())));
 #endif
   if(args.size() == 1 && args[0] == "--methods")
   {

@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -22,6 +23,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <thread>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -67,6 +69,12 @@ int main(int argc, char** argv)
   // library leaves malloc alone; programs may do the same.
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  // Kept memory stays in the heap of the thread that freed it, and glibc
+  // gives up to eight heaps per core to the threads: the worker threads of
+  // the metric, the embedding and the candidates' graph cuts each kept
+  // their high-water mark (832,000 faces: 1.29 GB peak, 1.05 GB of it in
+  // use). One heap per core lets a thread reuse what another freed.
+  mallopt(M_ARENA_MAX, int(std::max(1u, std::thread::hardware_concurrency())));
 #endif
   CLI::App app{"spectralseg: part-aware spectral segmentation of triangle meshes"};
   app.require_subcommand(1);
