@@ -129,6 +129,9 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
   std::vector<double> upper(n, std::numeric_limits<double>::infinity()), lower(n, 0.);
   std::vector<double> half_gap(kk), moved(kk);
   std::vector<double> previous(kk * dims);
+  const std::size_t block = 8192;
+  std::vector<double> block_sum;
+  std::vector<std::size_t> block_count;
   for(r.iterations = 0; r.iterations < max_iterations; ++r.iterations)
   {
     for(std::size_t c = 0; c < kk; ++c)
@@ -187,15 +190,31 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
       r.converged = true;
       break;
     }
-    // the sums in point order, as before, from the contiguous copy
-    std::vector<double> sum(kk * dims, 0.);
-    std::vector<std::size_t> count(kk, 0);
-    for(std::size_t i = 0; i < n; ++i)
+    // the sums of fixed blocks of points in parallel, each in point order,
+    // then the blocks' sums in block order: the same sums whatever the
+    // number of threads (one block below `block` points: point order)
+    const std::size_t blocks = (n + block - 1) / block;
+    block_sum.assign(blocks * kk * dims, 0.);
+    block_count.assign(blocks * kk, 0);
+    ::SpectralSeg::internal::parallel_range(0, blocks, exec.threads(), [&](std::size_t b) {
+      double* s = block_sum.data() + b * kk * dims;
+      std::size_t* m = block_count.data() + b * kk;
+      for(std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i)
+      {
+        const std::size_t c = std::size_t(r.labels[i]);
+        for(std::size_t j = 0; j < dims; ++j)
+          s[c * dims + j] += p[i * dims + j];
+        ++m[c];
+      }
+    });
+    std::vector<double> sum(block_sum.begin(), block_sum.begin() + std::ptrdiff_t(kk * dims));
+    std::vector<std::size_t> count(block_count.begin(), block_count.begin() + std::ptrdiff_t(kk));
+    for(std::size_t b = 1; b < blocks; ++b)
     {
-      const std::size_t c = std::size_t(r.labels[i]);
-      for(std::size_t j = 0; j < dims; ++j)
-        sum[c * dims + j] += p[i * dims + j];
-      ++count[c];
+      for(std::size_t t = 0; t < kk * dims; ++t)
+        sum[t] += block_sum[b * kk * dims + t];
+      for(std::size_t c = 0; c < kk; ++c)
+        count[c] += block_count[b * kk + c];
     }
     for(std::size_t c = 0; c < kk; ++c)
       if(count[c] > 0)
