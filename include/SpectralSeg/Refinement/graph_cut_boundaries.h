@@ -373,6 +373,13 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   problem.labels = k;
   std::vector<std::size_t> face_of_variable;
   std::vector<double> face_cost(k), within_reach;
+  const Eigen::Index dims = embedding.cols();
+  if(proxies.cols() != dims)
+    throw Invalid_input("graph cut: the proxies and the embedding must have the same number of columns");
+  std::vector<double> row(static_cast<std::size_t>(dims)), proxy(k * static_cast<std::size_t>(dims));
+  for(std::size_t c = 0; c < k; ++c)
+    for(Eigen::Index j = 0; j < dims; ++j)
+      proxy[c * std::size_t(dims) + std::size_t(j)] = proxies(Eigen::Index(c), j);
   // at most the band's faces become variables, with their own label and
   // those within reach: reserved, so that the largest arrays of a large
   // mesh are not grown by doubling
@@ -391,18 +398,31 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   {
     if(labels[f] < 0 || std::size_t(labels[f]) >= k)
       throw Invalid_input("graph cut: a label is outside [0, number of proxies)");
+    if(!in_band[f])
+      continue;
+    // the face's row read once (the embedding is stored column after column)
+    for(Eigen::Index j = 0; j < dims; ++j)
+      row[std::size_t(j)] = embedding(Eigen::Index(f), j);
     double total = 0.;
     for(std::size_t c = 0; c < k; ++c)
     {
-      const double d = std::max((embedding.row(Eigen::Index(f)) - proxies.row(Eigen::Index(c))).norm(), 1e-12 * scale);
+      // the squared norm summed coordinate after coordinate, as Eigen does
+      // for a row of a column-major matrix
+      const double* q = proxy.data() + c * std::size_t(dims);
+      double squared = 0.;
+      if(dims > 0)
+      {
+        squared = (row[0] - q[0]) * (row[0] - q[0]);
+        for(std::size_t j = 1; j < std::size_t(dims); ++j)
+          squared += (row[j] - q[j]) * (row[j] - q[j]);
+      }
+      const double d = std::max(std::sqrt(squared), 1e-12 * scale);
       face_cost[c] = 1. / d;
       total += face_cost[c];
     }
     for(std::size_t c = 0; c < k; ++c)
       face_cost[c] = -std::log(face_cost[c] / total);
     const std::size_t own = std::size_t(labels[f]);
-    if(!in_band[f])
-      continue;
     if(options.band_width > 0.)
     {
       // only the own label and those within reach
