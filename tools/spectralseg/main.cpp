@@ -41,10 +41,10 @@ namespace {
 // glibc.malloc.hugetlb (to any value, 0 included), the tool starts itself
 // again with glibc.malloc.hugetlb=1: malloc then asks for transparent huge
 // pages (madvise) on the heaps it grows, and the first touch of the mesh,
-// graph and embedding arrays costs a fraction of the page faults
-// (doc/benchmarks.md; armadillo 52,000 faces, whole command about 15%
-// faster). Where the kernel does not give huge pages, or glibc does not
-// know the tunable, nothing changes; if the new start fails, this one goes on.
+// graph and embedding arrays costs a fraction of the page faults (figures
+// in doc/benchmarks.md). Where the kernel does not give huge pages, or
+// glibc does not know the tunable, nothing changes; if the new start
+// fails, this one goes on.
 void restart_with_huge_pages(char** argv)
 {
   const char* name = "GLIBC_TUNABLES";
@@ -107,8 +107,8 @@ int main(int argc, char** argv)
   // Kept memory stays in the heap of the thread that freed it, and glibc
   // gives up to eight heaps per core to the threads: the worker threads of
   // the metric, the embedding and the candidates' graph cuts each kept
-  // their high-water mark (832,000 faces: 1.29 GB peak, 1.05 GB of it in
-  // use). One heap per core lets a thread reuse what another freed.
+  // their high-water mark (doc/benchmarks.md). One heap per core lets a
+  // thread reuse what another freed.
   mallopt(M_ARENA_MAX, int(std::max(1u, std::thread::hardware_concurrency())));
 #endif
   CLI::App app{"spectralseg: part-aware spectral segmentation of triangle meshes"};
