@@ -38,4 +38,4 @@ tool=$!
 cmake --build "$BUILD_DIR" --target spectralseg_header_self_containment -j "$JOBS"
 wait "$tool"
 cd "$BUILD_DIR"
-ctest --output-on-failure -R '^(header_self_containment|cli_tests|install_consumer)$'
+ctest --output-on-failure -j 2 -R '^(header_self_containment|cli_tests|install_consumer)$'

@@ -5,45 +5,41 @@
 #ifndef SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
 #define SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
 
-#include <CGAL/hilbert_sort.h>
+#include <CGAL/Hilbert_sort_median_3.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <numeric>
 #include <vector>
 
 namespace SpectralSeg {
 namespace IO {
 namespace internal {
 
-// CGAL's spatial-sorting traits on indices into an array of keys: the point
-// of index i is keys[i].position, compared along one axis with ties broken
-// by the other two axes and then by keys[i].tie. The comparisons are a
-// strict total order, so the median splits of CGAL::hilbert_sort() (which
-// shuffles first) put the same indices on each side whatever the order
-// they come in: the sorted sequence depends on the keys only.
+// A point to sort, carrying the index it had: CGAL's spatial-sorting traits
+// below compare positions along one axis with ties broken by the other two
+// axes and then by `tie`. The comparisons are a strict total order, so each
+// median split of CGAL's Hilbert sort puts the same keys on each side
+// whatever the order they come in: the sorted sequence depends on the keys
+// only (not on the input order, nor on a shuffle).
 struct Spatial_order_key
 {
   std::array<double, 3> position;
   std::array<std::size_t, 3> tie;
+  std::size_t index;
 };
 
 class Spatial_order_traits
 {
 public:
-  typedef std::size_t Point_3;
-
-  explicit Spatial_order_traits(const std::vector<Spatial_order_key>& keys) : keys_(&keys) {}
+  typedef Spatial_order_key Point_3;
 
   template <int axis>
   struct Less
   {
-    const std::vector<Spatial_order_key>* keys;
-    bool operator()(std::size_t a, std::size_t b) const
+    bool operator()(const Spatial_order_key& p, const Spatial_order_key& q) const
     {
-      const Spatial_order_key& p = (*keys)[a];
-      const Spatial_order_key& q = (*keys)[b];
       for(int i = 0; i < 3; ++i)
       {
         const int c = (axis + i) % 3;
@@ -56,21 +52,22 @@ public:
   typedef Less<0> Less_x_3;
   typedef Less<1> Less_y_3;
   typedef Less<2> Less_z_3;
-  Less_x_3 less_x_3_object() const { return Less_x_3{keys_}; }
-  Less_y_3 less_y_3_object() const { return Less_y_3{keys_}; }
-  Less_z_3 less_z_3_object() const { return Less_z_3{keys_}; }
-
-private:
-  const std::vector<Spatial_order_key>* keys_;
+  Less_x_3 less_x_3_object() const { return Less_x_3(); }
+  Less_y_3 less_y_3_object() const { return Less_y_3(); }
+  Less_z_3 less_z_3_object() const { return Less_z_3(); }
 };
 
 // The indices of `keys` in the order of a Hilbert curve through their
 // positions (CGAL's median policy: the curve adapts to where the points are).
-inline std::vector<std::size_t> hilbert_order(const std::vector<Spatial_order_key>& keys)
+// The keys themselves are sorted, not indices into them: the median splits
+// then read memory in sequence instead of jumping through an index array.
+inline std::vector<std::size_t> hilbert_order(std::vector<Spatial_order_key>& keys)
 {
+  const CGAL::Hilbert_sort_median_3<Spatial_order_traits, CGAL::Sequential_tag> sort{Spatial_order_traits()};
+  sort(keys.begin(), keys.end());
   std::vector<std::size_t> order(keys.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  CGAL::hilbert_sort(order.begin(), order.end(), Spatial_order_traits(keys), CGAL::Hilbert_sort_median_policy());
+  for(std::size_t i = 0; i < keys.size(); ++i)
+    order[i] = keys[i].index;
   return order;
 }
 
@@ -106,7 +103,8 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
   std::vector<Spatial_order_key> keys(points.size());
   for(std::size_t v = 0; v < points.size(); ++v)
     keys[v] = {{{CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()), CGAL::to_double(points[v].z())}},
-               {{v, 0, 0}}};
+               {{v, 0, 0}},
+               v};
   const std::vector<std::size_t> new_vertex = apply_order(points, hilbert_order(keys));
 
   keys.assign(triangles.size(), Spatial_order_key());
@@ -125,6 +123,7 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
       k.position[2] += CGAL::to_double(points[v].z()) / 3;
     }
     k.tie = tri;
+    k.index = t;
   }
   return apply_order(triangles, hilbert_order(keys));
 }
