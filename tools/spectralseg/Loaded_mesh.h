@@ -28,12 +28,18 @@ struct Loaded_mesh
   SpectralSeg::IO::Mesh_file_report report;
   SpectralSeg::Dual_graph graph;
 
-  Loaded_mesh(const std::string& path, const Progress_printer& out)
+  // Without `keep_mesh` the halfedge mesh is released once the dual graph
+  // is built (the graph holds all the geometry the methods and the picture
+  // use; only the mesh outputs need the mesh): on a large mesh it is a
+  // twentieth of the peak memory of a segmentation.
+  Loaded_mesh(const std::string& path, const Progress_printer& out, bool keep_mesh = true)
   {
     report = SpectralSeg::IO::read_mesh_file(path, mesh);
     for(const std::string& w : report.warnings)
       out.message("warning: " + w);
     graph = SpectralSeg::make_dual_graph(mesh);
+    if(!keep_mesh)
+      mesh = Mesh();
     const std::size_t degenerate = graph.geometry().number_of_degenerate_faces();
     if(degenerate > 0)
       out.message("warning: " + std::to_string(degenerate) +
