@@ -11,6 +11,7 @@
 #include <SpectralSeg/internal/parallel_for.h>
 
 #include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/graph/dijkstra_shortest_paths_no_color_map.hpp>
 #include <boost/property_map/property_map.hpp>
 #include <boost/range/iterator_range.hpp>
 
@@ -180,6 +181,10 @@ private:
                                      index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
                                      boost::make_dijkstra_visitor(Nearest_recorder{nearest}));
     }
+    else if(sources.size() == 1)
+      boost::dijkstra_shortest_paths_no_color_map(g, sources.front(), boost::dummy_property_map(), dmap, weight, index,
+                                                  std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
+                                                  boost::default_dijkstra_visitor());
     else
       boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
                                      index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
