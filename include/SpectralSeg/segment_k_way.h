@@ -124,11 +124,12 @@ void cut_hierarchy(const Weighted_dual_graph& graph, std::size_t parts, std::siz
 
 // Merge (when over-segmented), graph cut and connected segments on the k
 // K-means clusters of kmeans_clusters(): k_final segments; the merges in
-// r.hierarchy.
+// r.hierarchy (or, with `keep`, in `*keep`, for hierarchy_from_merges()
+// later: a candidate that loses never builds its hierarchy).
 template <typename AffinityKernel>
 void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
-                     const Execution& exec)
+                     const Execution& exec, Refinement::internal::Merge_history* keep = nullptr)
 {
   const Eigen::MatrixXd& coordinates = r.embedding.coordinates;
   // Over-segmented: merge first, then cut the k merged segments with their
@@ -154,8 +155,11 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
       Refinement::internal::merge_weakest(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
                                           options.merge_min_area_fraction, options.merge_size_exponent, separation,
                                           &history);
-    r.hierarchy =
-      hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+    if(keep)
+      *keep = std::move(history);
+    else
+      r.hierarchy =
+        hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
     return m;
   };
   Eigen::MatrixXd proxies = r.clusters.centroids;
@@ -304,6 +308,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     specs.push_back(Candidate{d, std::max(k, d), true});
   }
   std::vector<K_way_result> candidates(specs.size());
+  // their merges, made into a hierarchy for the kept candidate only
+  std::vector<Refinement::internal::Merge_history> histories(specs.size());
   std::vector<std::vector<std::pair<std::string, double>>> times(specs.size());
   const Embedding::Embedding_options& eo = options.embedding;
   // Nyström with farthest-point samples: the samples are nested, so the
@@ -357,13 +363,13 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     {
       // the contrast merge down to k segments: its hierarchy cut at k
       const std::size_t m = internal::merge_clusters_by_contrast(
-        graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale, c);
+        graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale, c, &histories[i]);
       t("merge");
       internal::graph_cut_merged(graph, m, specs[i].clusters, options, c, x, &t);
       c.contrast_merge = true;
     }
     else
-      internal::refine_clusters(graph, specs[i].clusters, k, options, c, t, x);
+      internal::refine_clusters(graph, specs[i].clusters, k, options, c, t, x, &histories[i]);
     c.extra_clusters = specs[i].clusters - k;
     c.normalized_cut = Refinement::concave_normalized_cut(graph.graph(), c.labels, options.cut_angle_scale);
     t("choice");
@@ -412,6 +418,9 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       sum.add(t.first, t.second);
   r = std::move(candidates[kept]);
   r.timings = std::move(timings);
+  const Refinement::internal::Merge_history& h = histories[kept];
+  if(!h.labels.empty())
+    r.hierarchy = internal::hierarchy_from_merges(h.labels, graph.graph().geometry().areas, h.steps, h.answer);
   return r;
 }
 

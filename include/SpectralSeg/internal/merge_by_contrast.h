@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 /// \cond SKIP_IN_MANUAL
@@ -97,12 +98,15 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
 // concave creases (`k_way.crease_angle`), made connected and merged by
 // contrast (merge_by_contrast(), with `k_way`'s minimum area fraction and
 // separation scale); every merge down to one segment per component goes
-// into `r.hierarchy`, whose answer is where `limit` or `min_segments` stops
-// the merge, as are `r.labels`. Returns the number of segments there.
+// into `r.hierarchy` (or, with `keep`, into `*keep`, for
+// hierarchy_from_merges() later), whose answer is where `limit` or
+// `min_segments` stops the merge, as are `r.labels`. Returns the number of
+// segments there.
 template <typename AffinityKernel>
 std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
                                        const Basic_K_way_options<AffinityKernel>& k_way, std::size_t min_segments,
-                                       double limit, double neck_scale, K_way_result& r)
+                                       double limit, double neck_scale, K_way_result& r,
+                                       Refinement::internal::Merge_history* keep = nullptr)
 {
   if(k_way.crease_angle > 0.)
   {
@@ -121,7 +125,10 @@ std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
   Refinement::internal::Merge_history history;
   const std::size_t m = merge_by_contrast(graph.graph(), graph.weights(), r.labels, min_segments, limit,
                                           k_way.merge_min_area_fraction, separation, neck_scale, &history);
-  r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+  if(keep)
+    *keep = std::move(history);
+  else
+    r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
   return m;
 }
 
