@@ -6,6 +6,7 @@
 #define SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
 
 #include <CGAL/Hilbert_sort_median_3.h>
+#include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
