@@ -329,9 +329,11 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   // The stages that use every thread (embedding, K-means) for one
   // candidate after the other, then the mostly sequential ones (merge,
   // max-flow) side by side: each thread takes the next candidate not yet
-  // taken, the threads shared between them; this thread reports progress to
-  // `exec`, the others stop when it throws. A candidate's result does not
-  // depend on where, or on how many threads, it ran.
+  // taken, the threads shared between them; this thread takes the first
+  // (before the others start, so the progress callback is always reached)
+  // and reports progress to `exec`, the others stop when it throws. A
+  // candidate's result does not depend on where, or on how many threads, it
+  // ran.
   for(std::size_t i = 0; i < specs.size(); ++i)
   {
     internal::Stage_timer t(times[i], true);
@@ -385,16 +387,17 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
                                return true;
                              });
     const Execution other(threads, [&stop](const std::string&, double) { return !stop.load(); });
-    const auto work = [&](const Execution& x) {
-      for(std::size_t i = next++; i < specs.size() && !stop.load(); i = next++)
+    const auto work = [&](std::size_t i, const Execution& x) {
+      for(; i < specs.size() && !stop.load(); i = next++)
         refine(i, x);
     };
     std::vector<std::future<void>> others;
     try
     {
+      const std::size_t first = next++;
       for(std::size_t w = 1; w < workers; ++w)
-        others.push_back(std::async(std::launch::async, work, std::cref(other)));
-      work(here);
+        others.push_back(std::async(std::launch::async, [&] { work(next++, other); }));
+      work(first, here);
       for(auto& f : others)
         f.get(); // rethrows a candidate's exception
     }
