@@ -21,6 +21,8 @@
 //                           saturation), base=covariance|perimeter|loop (protrusion base), floor=0|1 (M's
 //                           concave weights at least epsilon), whiten=none|m|both, agree=0|1 (L and M must both pass),
 //                           min-salience=X, roots=0|1 (min-salience applies to a component's first cut)
+//                           unsegmentable-roots=0|1 (a component that fails the test is still cut when min-salience
+//                           allows), pairs=N (sample-face pairs tried per piece)
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --labels-dir DIR        each result's labels, METHOD_ID.seg, one per face of the .off file
@@ -391,6 +393,10 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
       so.segmentability.require_agreement = value == "1";
     else if(key == "min-salience")
       so.min_cut_salience = std::stod(value);
+    else if(key == "pairs")
+      so.sample_pairs = std::stoul(value);
+    else if(key == "unsegmentable-roots")
+      so.cut_unsegmentable_roots = value == "1";
     else if(key == "roots")
       so.min_cut_salience_at_roots = value == "1";
     else

@@ -15,6 +15,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <map>
@@ -194,6 +196,22 @@ TEST_CASE("bending samples land on two different limbs of the star", "[automatic
   CHECK(seq.key[st.first] <= seq.key[seq.order.front()] + 1e-9);
   CHECK(seq.key[st.second] >= seq.key[seq.order.back()] - 1e-9);
   CHECK(seq.key[st.first] < seq.key[st.second]);
+  // more pairs: the thesis's first, then one per further protrusion of the
+  // contour, each starting on a limb
+  const auto pairs = Segmentability::bending_sample_face_pairs(piece, r, 10);
+  REQUIRE(pairs.size() >= 2);
+  CHECK(pairs.front() == st);
+  std::set<int> starts;
+  for(const auto& p : pairs)
+  {
+    CHECK(std::count(pairs.begin(), pairs.end(), p) == 1);
+    REQUIRE(p.first < piece.number_of_faces());
+    REQUIRE(p.second < piece.number_of_faces());
+    starts.insert(s.soup.face_part[piece.faces()[p.first]]);
+  }
+  CHECK(starts.count(0) == 0);
+  CHECK(starts.size() >= 2);
+  CHECK(Segmentability::bending_sample_face_pairs(piece, r, 1).size() == 1);
 }
 
 TEST_CASE("O(1) salience updates equal a recomputation at every position", "[automatic]")
@@ -391,23 +409,51 @@ TEST_CASE("automatic segmentation of the star: parts, hierarchy, threads", "[aut
 TEST_CASE("the first cut of a body takes a limb, not a half", "[automatic]")
 {
   const Shape s(body());
-  const Automatic_segmentation_result r =
-    segment_automatically(s.graph, sequence_weights(s.graph), Automatic_segmentation_options<>(), Execution(1));
-  const Part_node& root = r.hierarchy.nodes[r.hierarchy.roots[0]];
-  auto cut = first_cut(r, s.soup);
-  REQUIRE(cut.first);
-  const Part_node& smaller = *cut.first;
-  std::map<int, std::size_t>& parts = cut.second;
-  int most = -1;
-  for(const auto& p : parts)
-    if(most < 0 || p.second > parts[most])
-      most = p.first;
-  INFO("first cut: " << smaller.faces.size() << " faces, " << parts.size() << " body parts, mostly part " << most
-                     << "; " << r.number_of_segments << " parts in all");
-  CHECK(most >= 1);
-  CHECK(most <= 4); // a leg or an arm
-  CHECK(double(parts[most]) >= 0.9 * double(smaller.faces.size()));
-  CHECK(smaller.area < 0.25 * root.area); // not a half
+  for(std::size_t pairs : {1, 3})
+  {
+    Automatic_segmentation_options<> o;
+    o.sample_pairs = pairs;
+    const Automatic_segmentation_result r = segment_automatically(s.graph, sequence_weights(s.graph), o, Execution(1));
+    const Part_node& root = r.hierarchy.nodes[r.hierarchy.roots[0]];
+    auto cut = first_cut(r, s.soup);
+    REQUIRE(cut.first);
+    const Part_node& smaller = *cut.first;
+    std::map<int, std::size_t>& parts = cut.second;
+    int most = -1;
+    for(const auto& p : parts)
+      if(most < 0 || p.second > parts[most])
+        most = p.first;
+    INFO("sample pairs " << pairs << ", first cut: " << smaller.faces.size() << " faces, " << parts.size()
+                          << " body parts, mostly part " << most << "; " << r.number_of_segments << " parts in all");
+    CHECK(most >= 1);
+    CHECK(most <= 4); // a leg or an arm
+    CHECK(double(parts[most]) >= 0.9 * double(smaller.faces.size()));
+    CHECK(smaller.area < 0.25 * root.area); // not a half
+  }
+}
+
+TEST_CASE("a component no test passes is still cut once when its best cut is salient enough", "[automatic]")
+{
+  const Shape s(body());
+  const std::vector<double> w = sequence_weights(s.graph);
+  Automatic_segmentation_options<> o;
+  CHECK(o.cut_unsegmentable_roots);
+  CHECK_FALSE(Automatic_segmentation_options<>::thesis().cut_unsegmentable_roots);
+  o.segmentability.threshold = 2.; // above every score: no piece is segmentable
+  const Automatic_segmentation_result cut = segment_automatically(s.graph, w, o, Execution(1));
+  REQUIRE(cut.number_of_segments == 2); // the root only: below it the test decides
+  const Part_node& root = cut.hierarchy.nodes[cut.hierarchy.roots[0]];
+  CHECK(root.test == Segmentability::Test::none);
+  CHECK(root.cut_salience >= o.min_cut_salience);
+  const auto first = first_cut(cut, s.soup);
+  REQUIRE(first.first);
+  CHECK(first.first->area < 0.25 * root.area); // a limb, not a half
+  // the salience floor decides: above the best cut's salience, no cut
+  o.min_cut_salience = std::nextafter(root.cut_salience, 2.);
+  CHECK(segment_automatically(s.graph, w, o, Execution(1)).number_of_segments == 1);
+  o.min_cut_salience = Automatic_segmentation_options<>().min_cut_salience;
+  o.cut_unsegmentable_roots = false;
+  CHECK(segment_automatically(s.graph, w, o, Execution(1)).number_of_segments == 1);
 }
 
 TEST_CASE("human_man: the first cut takes an arm; the thesis's salience takes half the body", "[automatic]")

@@ -79,6 +79,18 @@ struct Automatic_segmentation_options
   /// floor only stops the recursion inside it; a fish or a vase whose only
   /// parts meet the body without a crease is then still cut once)
   bool min_cut_salience_at_roots = false;
+  /// whether a connected component that fails the segmentability test is
+  /// still cut once when its best cut is at least `min_cut_salience` salient
+  /// (our addition; `false` in the thesis, where such a component is one
+  /// part). The contours of a cup, a vase or a machine part whose parts are
+  /// thin attachments look convex in both projections; the salience floor
+  /// then decides, as it does below the first cut. Below the roots the
+  /// test alone decides: there it would dice torsos and table tops.
+  bool cut_unsegmentable_roots = true;
+  /// how many pairs of sample faces are tried on each piece, the most
+  /// salient of their cuts kept (`Segmentability::bending_sample_face_pairs()`;
+  /// 1: the thesis's single pair)
+  std::size_t sample_pairs = 1;
 
   /// the segmentability options of the improved method: the thesis's, with
   /// M's concave weights floored at \f$\epsilon\f$ and the M projection
@@ -102,6 +114,7 @@ struct Automatic_segmentation_options
     o.min_part_area_fraction = 0.;
     o.max_parts = 0;
     o.min_cut_salience = 0.;
+    o.cut_unsegmentable_roots = false;
     return o;
   }
 };
@@ -241,40 +254,50 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
       node.score = test.score;
       node.scores = test.scores;
     }
-    if(!test.segmentable)
+    const bool is_root = h.nodes[i].parent == Part_node::none;
+    if(!test.segmentable && !(is_root && options.cut_unsegmentable_roots))
     {
       settle();
       continue;
     }
-    std::pair<Mesh_piece::size_type, Mesh_piece::size_type> st = Segmentability::bending_sample_faces(piece, test);
-    if(st.first == st.second)
+    // the most salient cut over the sample pairs (the first one wins ties)
+    Salient_cut::Salient_cut cut;
+    std::pair<Mesh_piece::size_type, Mesh_piece::size_type> samples(0, 0);
+    for(std::pair<Mesh_piece::size_type, Mesh_piece::size_type> st :
+        Segmentability::bending_sample_face_pairs(piece, test, std::max<std::size_t>(options.sample_pairs, 1)))
     {
-      // a degenerate contour: the face farthest from the first sample
-      const std::vector<double> d = Salient_cut::piece_distances(piece, weights, st.first);
-      double best = -1.;
-      for(Mesh_piece::size_type f = 0; f < d.size(); ++f)
-        if(std::isfinite(d[f]) && d[f] > best)
-        {
-          best = d[f];
-          st.second = f;
-        }
+      if(st.first == st.second)
+      {
+        // a degenerate contour: the face farthest from the first sample
+        const std::vector<double> d = Salient_cut::piece_distances(piece, weights, st.first);
+        double best = -1.;
+        for(Mesh_piece::size_type f = 0; f < d.size(); ++f)
+          if(std::isfinite(d[f]) && d[f] > best)
+          {
+            best = d[f];
+            st.second = f;
+          }
+      }
+      if(st.first == st.second)
+        continue;
+      const Salient_cut::Face_sequence seq = Salient_cut::face_sequence(piece, weights, st.first, st.second, exec);
+      lap("face sequence");
+      Salient_cut::Salient_cut c =
+        Salient_cut::salient_cut_search(piece, seq.order, salience, test.projection_kind(), false, min_area);
+      lap("cut search");
+      if(c.position != 0 && (cut.position == 0 || c.salience > cut.salience))
+      {
+        cut = std::move(c);
+        samples = st;
+      }
     }
-    if(st.first == st.second)
+    const bool floor = options.min_cut_salience_at_roots || !is_root;
+    if(cut.position == 0 || (floor && cut.salience < options.min_cut_salience) ||
+       (!test.segmentable && cut.salience < options.min_cut_salience))
     {
       settle();
       continue;
     }
-    const Salient_cut::Face_sequence seq = Salient_cut::face_sequence(piece, weights, st.first, st.second, exec);
-    lap("face sequence");
-    Salient_cut::Salient_cut cut =
-      Salient_cut::salient_cut_search(piece, seq.order, salience, test.projection_kind(), false, min_area);
-    const bool floor = options.min_cut_salience_at_roots || h.nodes[i].parent != Part_node::none;
-    if(cut.position == 0 || (floor && cut.salience < options.min_cut_salience))
-    {
-      settle();
-      continue;
-    }
-    lap("cut search");
     if(!options.closing_rings.empty())
       Refinement::enhance_cut_boundary(piece, cut.side, options.closing_rings);
     else
@@ -295,7 +318,7 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     Part_node& node = h.nodes[i];
     node.cut_salience = cut.salience;
     node.cut_order = cuts++;
-    node.samples = {piece.faces()[st.first], piece.faces()[st.second]};
+    node.samples = {piece.faces()[samples.first], piece.faces()[samples.second]};
     const std::size_t depth = node.depth + 1;
     for(int c = 0; c < 2; ++c)
     {

@@ -16,11 +16,13 @@
 #include <SpectralSeg/Segmentability/principal_curvatures.h>
 #include <SpectralSeg/Segmentability/spectral_projection.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace SpectralSeg {
 namespace Segmentability {
@@ -159,21 +161,48 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
 }
 
 /// \ingroup PkgSpectralSegSegmentability
-/// \brief The two sample faces of a segmentable piece (thesis 6.3.3): on the
-/// contour that passed, the vertex of largest integrated bending score and
-/// the vertex farthest from it in inner distance; each is mapped to the
-/// piece vertex nearest to it in the projection, then to the face around
-/// that vertex whose centroid is nearest to it.
+/// \brief Pairs of sample faces of a piece, the first of them the thesis's
+/// (6.3.3): on the contour that passed, the vertex of largest integrated
+/// bending score and the vertex farthest from it in inner distance. The
+/// others (our addition) start from the next local maxima of the score
+/// along the contour, highest first, each paired with the vertex farthest
+/// from it: one pair per protrusion the contour shows. Each vertex is
+/// mapped to the piece vertex nearest to it in the projection, then to the
+/// face around that vertex whose centroid is nearest to it. Pairs that map
+/// to the same two faces are listed once.
 ///
-/// \return two local faces; they may coincide on degenerate contours
-/// \pre `result.segmentable`
-inline std::pair<Mesh_piece::size_type, Mesh_piece::size_type>
-bending_sample_faces(const Mesh_piece& piece, const Segmentability_result& result)
+/// \param piece the piece tested
+/// \param result its test (the contour of the last test run when none passed)
+/// \param count at most this many pairs (at least one is returned)
+/// \return pairs of local faces; the two faces of a pair may coincide on
+///         degenerate contours
+inline std::vector<std::pair<Mesh_piece::size_type, Mesh_piece::size_type>>
+bending_sample_face_pairs(const Mesh_piece& piece, const Segmentability_result& result, std::size_t count)
 {
   const bool normalized = result.test == Test::structure_normalized || result.test == Test::geometry_normalized;
   const Contour& c = normalized ? result.contour.normalized : result.contour.contour;
   const Eigen::MatrixXd inner = normalized ? inner_distances(c) : result.contour.inner;
-  const std::pair<std::size_t, std::size_t> st = bending_samples(c, inner);
+  const std::pair<std::size_t, std::size_t> first = bending_samples(c, inner);
+  std::vector<std::pair<std::size_t, std::size_t>> vertices{first};
+  if(count > 1 && c.size() > 2)
+  {
+    // the other local maxima of the score, highest first (ties: smaller index)
+    const std::vector<double> scores = integrated_bending_scores(c, inner);
+    const std::size_t n = scores.size();
+    std::vector<std::size_t> maxima;
+    for(std::size_t i = 0; i < n; ++i)
+      if(i != first.first && scores[i] >= scores[(i + n - 1) % n] && scores[i] >= scores[(i + 1) % n])
+        maxima.push_back(i);
+    std::stable_sort(maxima.begin(), maxima.end(), [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
+    for(std::size_t s : maxima)
+    {
+      if(vertices.size() >= count)
+        break;
+      Eigen::Index t = 0;
+      inner.row(Eigen::Index(s)).maxCoeff(&t);
+      vertices.emplace_back(s, std::size_t(t));
+    }
+  }
   auto to_face = [&](std::size_t contour_vertex) {
     const Eigen::Vector2d q = result.contour.contour[contour_vertex]; // in projection coordinates
     Mesh_piece::size_type best_v = 0;
@@ -204,7 +233,30 @@ bending_sample_faces(const Mesh_piece& piece, const Segmentability_result& resul
     }
     return best_f;
   };
-  return {to_face(st.first), to_face(st.second)};
+  std::vector<std::pair<Mesh_piece::size_type, Mesh_piece::size_type>> pairs;
+  for(const auto& st : vertices)
+  {
+    const std::pair<Mesh_piece::size_type, Mesh_piece::size_type> faces(to_face(st.first), to_face(st.second));
+    if(std::find(pairs.begin(), pairs.end(), faces) == pairs.end())
+      pairs.push_back(faces);
+  }
+  return pairs;
+}
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief The two sample faces of a segmentable piece (thesis 6.3.3): on the
+/// contour that passed, the vertex of largest integrated bending score and
+/// the vertex farthest from it in inner distance; each is mapped to the
+/// piece vertex nearest to it in the projection, then to the face around
+/// that vertex whose centroid is nearest to it (the first of
+/// `bending_sample_face_pairs()`).
+///
+/// \return two local faces; they may coincide on degenerate contours
+/// \pre `result.segmentable`
+inline std::pair<Mesh_piece::size_type, Mesh_piece::size_type>
+bending_sample_faces(const Mesh_piece& piece, const Segmentability_result& result)
+{
+  return bending_sample_face_pairs(piece, result, 1).front();
 }
 
 } // namespace Segmentability
