@@ -82,10 +82,10 @@ struct Automatic_segmentation_options
   /// whether a connected component that fails the segmentability test is
   /// still cut once when its best cut is at least `min_cut_salience` salient
   /// (our addition; `false` in the thesis, where such a component is one
-  /// part). The contours of a cup, a vase or a machine part whose parts are
-  /// thin attachments look convex in both projections; the salience floor
-  /// then decides, as it does below the first cut. Below the roots the
-  /// test alone decides: there it would dice torsos and table tops.
+  /// part). No contour of many cups, vases and machine parts passes at the
+  /// root; the salience floor then decides, as it does below the first cut.
+  /// Below the roots the test alone decides (the same rule there dices
+  /// tables and chairs, doc/benchmarks.md).
   bool cut_unsegmentable_roots = true;
   /// how many pairs of sample faces are tried on each piece, the most
   /// salient of their cuts kept (`Segmentability::bending_sample_face_pairs()`;
