@@ -41,7 +41,8 @@ struct Part_node
   /// whether the segmentability test ran on this piece (small pieces and
   /// pieces left when the part budget ran out are not tested)
   bool tested = false;
-  /// the test that passed (`Segmentability::Test::none` if none did)
+  /// the test that passed (`Segmentability::Test::none` if none did: a
+  /// leaf, or a component cut by `cut_unsegmentable_roots`)
   Segmentability::Test test = Segmentability::Test::none;
   /// score of the passing test, or the largest score of those run
   double score = 0.;

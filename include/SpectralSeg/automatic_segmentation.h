@@ -152,12 +152,18 @@ inline std::vector<double> sequence_weights(const Dual_graph& graph, const Execu
 /// Each connected component of the graph is a first piece. The largest
 /// piece still pending is taken (ties: smallest first face):
 /// 1. `Segmentability::test_segmentability()`: if no contour test passes,
-///    the piece is a final part;
+///    the piece is a final part (with `options.cut_unsegmentable_roots`, a
+///    connected component goes on and is cut only by a cut of at least
+///    `options.min_cut_salience`);
 /// 2. `Segmentability::bending_sample_faces()` picks two faces on different
-///    parts, `Salient_cut::face_sequence()` orders the faces between them on
-///    the graph weighted by `weights`;
+///    parts (`options.sample_pairs` > 1: `bending_sample_face_pairs()`, each
+///    pair through steps 2 and 3, the most salient cut kept),
+///    `Salient_cut::face_sequence()` orders the faces between them on the
+///    graph weighted by `weights`;
 /// 3. `Salient_cut::salient_cut_search()` finds the most salient prefix,
-///    with the salience weights of the projection that passed;
+///    with the salience weights of the projection that passed; below a
+///    component's first cut, a cut under `options.min_cut_salience` leaves
+///    the piece a final part;
 /// 4. `Refinement::enhance_cut_boundary()` smooths the cut and makes each
 ///    side connected; both sides go back to the queue.
 ///
