@@ -182,22 +182,23 @@ bending_sample_face_pairs(const Mesh_piece& piece, const Segmentability_result& 
   const bool normalized = result.test == Test::structure_normalized || result.test == Test::geometry_normalized;
   const Contour& c = normalized ? result.contour.normalized : result.contour.contour;
   const Eigen::MatrixXd inner = normalized ? inner_distances(c) : result.contour.inner;
-  const std::pair<std::size_t, std::size_t> first = bending_samples(c, inner);
-  std::vector<std::pair<std::size_t, std::size_t>> vertices{first};
-  if(count > 1 && c.size() > 2)
+  std::vector<std::pair<std::size_t, std::size_t>> vertices;
+  if(count <= 1 || c.size() <= 2)
+    vertices.push_back(bending_samples(c, inner));
+  else
   {
-    // the other local maxima of the score, highest first (ties: smaller index)
+    // the local maxima of the score, highest first (ties: smaller index):
+    // the first is the global maximum of bending_samples()
     const std::vector<double> scores = integrated_bending_scores(c, inner);
     const std::size_t n = scores.size();
     std::vector<std::size_t> maxima;
     for(std::size_t i = 0; i < n; ++i)
-      if(i != first.first && scores[i] >= scores[(i + n - 1) % n] && scores[i] >= scores[(i + 1) % n])
+      if(scores[i] >= scores[(i + n - 1) % n] && scores[i] >= scores[(i + 1) % n])
         maxima.push_back(i);
     std::stable_sort(maxima.begin(), maxima.end(), [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
+    maxima.resize(std::min(maxima.size(), count));
     for(std::size_t s : maxima)
     {
-      if(vertices.size() >= count)
-        break;
       Eigen::Index t = 0;
       inner.row(Eigen::Index(s)).maxCoeff(&t);
       vertices.emplace_back(s, std::size_t(t));
@@ -252,7 +253,7 @@ bending_sample_face_pairs(const Mesh_piece& piece, const Segmentability_result& 
 /// `bending_sample_face_pairs()`).
 ///
 /// \return two local faces; they may coincide on degenerate contours
-/// \pre `result.segmentable`
+/// (with no passing test, from the contour of the last test run)
 inline std::pair<Mesh_piece::size_type, Mesh_piece::size_type>
 bending_sample_faces(const Mesh_piece& piece, const Segmentability_result& result)
 {
