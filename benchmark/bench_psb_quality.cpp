@@ -22,7 +22,8 @@
 //                           concave weights at least epsilon), whiten=none|m|both, agree=0|1 (L and M must both pass),
 //                           min-salience=X, roots=0|1 (min-salience applies to a component's first cut)
 //                           unsegmentable-roots=0|1 (a component that fails the test is still cut when min-salience
-//                           allows), pairs=N (sample-face pairs tried per piece)
+//                           allows), pairs=N (sample-face pairs tried per piece),
+//                           sequence=distance|harmonic, sequence-scale=S (the harmonic sequence's angle scale)
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --labels-dir DIR        each result's labels, METHOD_ID.seg, one per face of the .off file
@@ -397,6 +398,11 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
       so.sample_pairs = std::stoul(value);
     else if(key == "unsegmentable-roots")
       so.cut_unsegmentable_roots = value == "1";
+    else if(key == "sequence")
+      so.sequence = value == "distance" ? Options_type::Sequence::distance_difference
+                                        : Options_type::Sequence::concave_harmonic;
+    else if(key == "sequence-scale")
+      so.sequence_angle_scale = std::stod(value);
     else if(key == "roots")
       so.min_cut_salience_at_roots = value == "1";
     else

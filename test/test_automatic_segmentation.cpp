@@ -214,6 +214,77 @@ TEST_CASE("bending samples land on two different limbs of the star", "[automatic
   CHECK(Segmentability::bending_sample_face_pairs(piece, r, 1).size() == 1);
 }
 
+TEST_CASE("the harmonic sequence runs from 0 to 1 and puts its level sets on concave creases", "[automatic]")
+{
+  const Shape s(body());
+  const Mesh_piece piece = s.piece();
+  const std::size_t n = piece.number_of_faces();
+  const auto part = [&](Mesh_piece::size_type f) { return s.soup.face_part[piece.faces()[f]]; };
+  const auto centre = [&](Mesh_piece::size_type f) { return piece.geometry().centroids[piece.faces()[f]]; };
+  // from the tip of the left arm (part 3) to the top of the head (part 5)
+  Mesh_piece::size_type source = 0, target = 0;
+  for(Mesh_piece::size_type f = 0; f < n; ++f)
+  {
+    if(part(f) == 3 && (part(source) != 3 || centre(f).x() < centre(source).x()))
+      source = f;
+    if(part(f) == 5 && (part(target) != 5 || centre(f).z() > centre(target).z()))
+      target = f;
+  }
+  REQUIRE(part(source) == 3);
+  REQUIRE(part(target) == 5);
+  const double scale = 0.1;
+  const Salient_cut::Face_sequence seq = Salient_cut::harmonic_face_sequence(piece, source, target, scale);
+  REQUIRE(seq.order.size() == n);
+  CHECK(seq.order.front() == source);
+  CHECK(seq.order.back() == target);
+  CHECK(seq.key[source] == 0.);
+  CHECK(seq.key[target] == 1.);
+  // harmonic: every other face is the weighted mean of its neighbours
+  std::vector<double> sum(n, 0.), weight(n, 0.);
+  for(const Mesh_piece::Edge& pe : piece.edges())
+  {
+    const Dual_graph::Edge& e = piece.graph().edge(pe.dual_edge);
+    const double w = e.length / e.geodesic_length * (e.concave ? std::exp(-e.normal_angle / scale) : 1.);
+    for(int side = 0; side < 2; ++side)
+    {
+      sum[pe.face[side]] += w * seq.key[pe.face[1 - side]];
+      weight[pe.face[side]] += w;
+    }
+  }
+  double worst = 0., lowest = 1., highest = 0.;
+  for(Mesh_piece::size_type f = 0; f < n; ++f)
+  {
+    lowest = std::min(lowest, seq.key[f]);
+    highest = std::max(highest, seq.key[f]);
+    if(f != source && f != target)
+      worst = std::max(worst, std::abs(sum[f] / weight[f] - seq.key[f]));
+  }
+  CHECK(lowest >= 0.);
+  CHECK(highest <= 1.);
+  CHECK(worst < 1e-6);
+  // the arm meets the torso along a ring of concave right angles: the whole
+  // arm comes before every other face, so one prefix is exactly the arm
+  double arm = 0., rest = 1.;
+  for(Mesh_piece::size_type f = 0; f < n; ++f)
+  {
+    if(part(f) == 3)
+      arm = std::max(arm, seq.key[f]);
+    else
+      rest = std::min(rest, seq.key[f]);
+  }
+  INFO("arm up to " << arm << ", the rest from " << rest);
+  CHECK(arm < rest);
+  CHECK_THROWS_AS(Salient_cut::harmonic_face_sequence(piece, source, source, scale), Invalid_input);
+  CHECK_THROWS_AS(Salient_cut::harmonic_face_sequence(piece, source, target, 0.), Invalid_input);
+  // the improved method uses it, the thesis's the distance difference
+  typedef Automatic_segmentation_options<> Options;
+  CHECK(Options().sequence == Options::Sequence::concave_harmonic);
+  CHECK(Options::thesis().sequence == Options::Sequence::distance_difference);
+  Options bad;
+  bad.sequence_angle_scale = -1.;
+  CHECK_THROWS_AS(segment_automatically(s.graph, sequence_weights(s.graph), bad), Invalid_input);
+}
+
 TEST_CASE("O(1) salience updates equal a recomputation at every position", "[automatic]")
 {
   const Shape& s = star();

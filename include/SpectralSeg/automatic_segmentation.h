@@ -23,6 +23,8 @@
 #include <SpectralSeg/named_parameters.h>
 #include <SpectralSeg/segment_hybrid.h>
 
+#include <future>
+#include <memory>
 #include <queue>
 #include <string>
 #include <utility>
@@ -91,6 +93,25 @@ struct Automatic_segmentation_options
   /// salient of their cuts kept (`Segmentability::bending_sample_face_pairs()`;
   /// 1: the thesis's single pair)
   std::size_t sample_pairs = 1;
+  /// how the faces between two samples are put in sequence (each prefix a
+  /// candidate cut)
+  enum class Sequence
+  {
+    /// by \f$d(f, s) - d(f, t)\f$ on `sequence_weights()` (the thesis,
+    /// `Salient_cut::face_sequence()`)
+    distance_difference,
+    /// by a concavity-aware harmonic field from \f$s\f$ to \f$t\f$
+    /// (`Salient_cut::harmonic_face_sequence()`, our default): the
+    /// candidate cuts gather along concave creases
+    concave_harmonic
+  };
+  /// how the faces between two samples are put in sequence
+  Sequence sequence = Sequence::concave_harmonic;
+  /// the angle scale \f$s\f$ of `Sequence::concave_harmonic`, in radians:
+  /// across a concave edge of dihedral angle \f$\theta\f$ the field's
+  /// conductance is multiplied by \f$\exp(-\theta / s)\f$ (0.1, the
+  /// scale of `K_way_options::cut_angle_scale`)
+  double sequence_angle_scale = 0.1;
 
   /// the segmentability options of the improved method: the thesis's, with
   /// M's concave weights floored at \f$\epsilon\f$ and the M projection
@@ -115,6 +136,7 @@ struct Automatic_segmentation_options
     o.max_parts = 0;
     o.min_cut_salience = 0.;
     o.cut_unsegmentable_roots = false;
+    o.sequence = Sequence::distance_difference;
     return o;
   }
 };
@@ -158,8 +180,10 @@ inline std::vector<double> sequence_weights(const Dual_graph& graph, const Execu
 /// 2. `Segmentability::bending_sample_faces()` picks two faces on different
 ///    parts (`options.sample_pairs` > 1: `bending_sample_face_pairs()`, each
 ///    pair through steps 2 and 3, the most salient cut kept),
-///    `Salient_cut::face_sequence()` orders the faces between them on the
-///    graph weighted by `weights`;
+///    `Salient_cut::harmonic_face_sequence()` orders the faces between them
+///    by a concavity-aware harmonic field (`options.sequence`; the thesis's
+///    `Salient_cut::face_sequence()` orders them on the graph weighted by
+///    `weights`);
 /// 3. `Salient_cut::salient_cut_search()` finds the most salient prefix,
 ///    with the salience weights of the projection that passed; below a
 ///    component's first cut, a cut under `options.min_cut_salience` leaves
@@ -171,19 +195,25 @@ inline std::vector<double> sequence_weights(const Dual_graph& graph, const Execu
 /// `options.max_parts` is reached become parts without a test.
 ///
 /// \param graph the dual graph of the mesh (outward-oriented faces)
-/// \param weights one weight per dual edge, for the face sequences (default
-///        `sequence_weights()`)
+/// \param weights one weight per dual edge, for the face sequences of
+///        `Sequence::distance_difference` and for the farthest face of a
+///        degenerate contour (default `sequence_weights()`)
 /// \param options thresholds, modes and the salience model
 /// \param exec threads (the two Dijkstra runs of each sequence) and progress
 ///        (stage "automatic segmentation": the fraction of the area settled)
-/// \throws Invalid_input if `weights` does not have one valid value per dual edge
+/// \throws Invalid_input if `weights` does not have one valid value per dual edge, or
+///         `options.sequence_angle_scale` is not a positive number
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename SalienceModel>
 Automatic_segmentation_result segment_automatically(const Dual_graph& graph, const std::vector<double>& weights,
                                                     const Automatic_segmentation_options<SalienceModel>& options,
                                                     const Execution& exec = Execution())
 {
+  typedef Automatic_segmentation_options<SalienceModel> Options;
   Metrics::check_weights(graph, weights);
+  if(options.sequence == Options::Sequence::concave_harmonic &&
+     (!(options.sequence_angle_scale > 0.) || !std::isfinite(options.sequence_angle_scale)))
+    throw Invalid_input("automatic segmentation: the sequence angle scale must be a positive number");
   Automatic_segmentation_result r;
   internal::Stage_timer lap(r.timings, true);
   const std::size_t n = graph.number_of_faces();
@@ -250,6 +280,15 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     }
     const Mesh_piece piece(graph, h.nodes[i].faces);
     lap("pieces");
+    // the harmonic sequence's system does not depend on the samples: made
+    // on a second thread while the piece is tested (the same system either way)
+    const bool harmonic = options.sequence == Options::Sequence::concave_harmonic;
+    std::unique_ptr<Salient_cut::internal::Harmonic_system> system;
+    std::future<std::unique_ptr<Salient_cut::internal::Harmonic_system>> pending;
+    if(harmonic && exec.threads() > 1)
+      pending = std::async(std::launch::async, [&piece, &options] {
+        return std::make_unique<Salient_cut::internal::Harmonic_system>(piece, options.sequence_angle_scale);
+      });
     const Segmentability::Segmentability_result test =
       Segmentability::test_segmentability(piece, geometry ? &curvatures : nullptr, options.segmentability);
     lap("segmentability");
@@ -286,7 +325,13 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
       }
       if(st.first == st.second)
         continue;
-      const Salient_cut::Face_sequence seq = Salient_cut::face_sequence(piece, weights, st.first, st.second, exec);
+      if(harmonic && !system)
+        system = pending.valid() ? pending.get()
+                                 : std::make_unique<Salient_cut::internal::Harmonic_system>(
+                                     piece, options.sequence_angle_scale);
+      const Salient_cut::Face_sequence seq = harmonic ? system->sequence(st.first, st.second)
+                                                      : Salient_cut::face_sequence(piece, weights, st.first,
+                                                                                   st.second, exec);
       lap("face sequence");
       Salient_cut::Salient_cut c =
         Salient_cut::salient_cut_search(piece, seq.order, salience, test.projection_kind(), false, min_area);

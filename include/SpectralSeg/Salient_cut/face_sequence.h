@@ -11,6 +11,8 @@
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/parallel_for.h>
 
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/graph/dijkstra_shortest_paths_no_color_map.hpp>
 
@@ -122,6 +124,149 @@ inline Face_sequence face_sequence(const Mesh_piece& piece, const std::vector<do
     return s.key[a] < s.key[b] || (s.key[a] == s.key[b] && a < b);
   });
   return s;
+}
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The system of harmonic_face_sequence() for one piece: the weighted
+// Laplacian of its dual graph over all its faces and the symbolic analysis
+// of its Cholesky factorisation (fill-reducing ordering, elimination tree),
+// which do not depend on the samples, so that they can be made while the
+// samples are being chosen and serve several pairs. A sample's row and
+// column become those of the identity (explicit zeros keep the pattern),
+// which is the elimination of a Dirichlet value.
+class Harmonic_system
+{
+public:
+  Harmonic_system(const Mesh_piece& piece, double angle_scale) : piece_(&piece)
+  {
+    const std::size_t n = piece.number_of_faces();
+    if(!(angle_scale > 0.) || !std::isfinite(angle_scale))
+      throw Invalid_input("harmonic_face_sequence: the angle scale must be a positive number");
+    weight_.resize(piece.edges().size());
+    std::vector<double> diagonal(n, 0.);
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(2 * weight_.size() + n);
+    for(std::size_t i = 0; i < weight_.size(); ++i)
+    {
+      const Mesh_piece::Edge& pe = piece.edges()[i];
+      const Dual_graph::Edge& e = piece.graph().edge(pe.dual_edge);
+      double w = e.geodesic_length > 0. ? e.length / e.geodesic_length : 0.;
+      if(e.concave)
+        w *= std::exp(-e.normal_angle / angle_scale);
+      weight_[i] = w > 0. && std::isfinite(w) ? w : 0.;
+      diagonal[pe.face[0]] += weight_[i];
+      diagonal[pe.face[1]] += weight_[i];
+      entries.emplace_back(Eigen::Index(pe.face[0]), Eigen::Index(pe.face[1]), -weight_[i]);
+      entries.emplace_back(Eigen::Index(pe.face[1]), Eigen::Index(pe.face[0]), -weight_[i]);
+    }
+    // a face that no edge conducts to (a piece in several parts) keeps 0
+    for(std::size_t f = 0; f < n; ++f)
+      entries.emplace_back(Eigen::Index(f), Eigen::Index(f), diagonal[f] > 0. ? diagonal[f] : 1.);
+    matrix_.resize(Eigen::Index(n), Eigen::Index(n));
+    matrix_.setFromTriplets(entries.begin(), entries.end());
+    matrix_.makeCompressed();
+    solver_.analyzePattern(matrix_);
+  }
+
+  Face_sequence sequence(Mesh_piece::size_type source, Mesh_piece::size_type target)
+  {
+    const Mesh_piece& piece = *piece_;
+    const std::size_t n = piece.number_of_faces();
+    if(source >= n || target >= n || source == target)
+      throw Invalid_input("harmonic_face_sequence: the samples must be two different faces of the piece");
+    Eigen::SparseMatrix<double> a = matrix_;
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(n));
+    rhs(Eigen::Index(target)) = 1.;
+    for(Eigen::Index c = 0; c < a.outerSize(); ++c)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it)
+      {
+        const bool fixed_row = it.row() == Eigen::Index(source) || it.row() == Eigen::Index(target);
+        const bool fixed_col = c == Eigen::Index(source) || c == Eigen::Index(target);
+        if(it.row() == c)
+        {
+          if(fixed_row)
+            it.valueRef() = 1.;
+        }
+        else if(fixed_row || fixed_col)
+        {
+          // a free row's term in a sample's value moves to the right-hand side
+          if(fixed_col && !fixed_row && c == Eigen::Index(target))
+            rhs(it.row()) -= it.value();
+          it.valueRef() = 0.;
+        }
+      }
+    solver_.factorize(a);
+    if(solver_.info() != Eigen::Success)
+      throw Error("harmonic_face_sequence: the field's system could not be factorised");
+    const Eigen::VectorXd u = solver_.solve(rhs);
+    Face_sequence s;
+    s.source = source;
+    s.target = target;
+    s.key.resize(n);
+    for(std::size_t f = 0; f < n; ++f)
+      s.key[f] = f == source ? 0. : f == target ? 1. : std::min(1., std::max(0., u(Eigen::Index(f))));
+    s.order.resize(n);
+    std::iota(s.order.begin(), s.order.end(), Mesh_piece::size_type(0));
+    // the samples first and last whatever the rounding
+    const auto rank = [&](Mesh_piece::size_type f) { return f == source ? 0 : f == target ? 2 : 1; };
+    std::sort(s.order.begin(), s.order.end(), [&](Mesh_piece::size_type x, Mesh_piece::size_type y) {
+      if(rank(x) != rank(y))
+        return rank(x) < rank(y);
+      return s.key[x] < s.key[y] || (s.key[x] == s.key[y] && x < y);
+    });
+    return s;
+  }
+
+private:
+  const Mesh_piece* piece_;
+  std::vector<double> weight_;
+  Eigen::SparseMatrix<double> matrix_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
+};
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegSalientCut
+/// \brief Sorts the faces of a piece by a concavity-aware harmonic field
+/// from `source` (0) to `target` (1) (our variant of thesis 6.3, after Au
+/// et al., "Mesh segmentation with concavity-aware fields", 2012).
+///
+/// The field \f$u\f$ solves \f$\sum_g w_{fg}(u_f - u_g) = 0\f$ at every
+/// face but the two samples, over the piece's dual edges, with
+/// \f$w_{fg} = \frac{l_e}{d_e} \exp(-\theta_e / s)\f$ across a concave
+/// edge and \f$\frac{l_e}{d_e}\f$ across any other: \f$l_e\f$ the shared
+/// edge's length, \f$d_e\f$ the distance between the two face centres
+/// through its midpoint, \f$\theta_e\f$ the angle between the two normals
+/// and \f$s\f$ `angle_scale`. The field changes fastest where the
+/// conductance is low, across concave creases, so its level sets gather
+/// there: each prefix of the sequence is a cut that follows the creases
+/// between the samples, where the distance difference of `face_sequence()`
+/// gives bisectors that cross them (a thigh cut through the pelvis, a leg
+/// cut at the knee). The weights are ratios and angles: the order does not
+/// depend on the mesh's scale.
+///
+/// One sparse Cholesky factorisation (Eigen's `SimplicialLDLT`); ties are
+/// broken by local face index, so the order is deterministic. Faces of a
+/// part of the piece that neither sample reaches get 0.
+///
+/// \param piece the piece
+/// \param source the first sample face (local), key 0
+/// \param target the second sample face (local), key 1
+/// \param angle_scale \f$s\f$, in radians (positive)
+/// \throws Invalid_input if a sample is out of range, the two samples are
+///         the same face or `angle_scale` is not a positive number
+/// \throws Error if the factorisation fails
+inline Face_sequence harmonic_face_sequence(const Mesh_piece& piece, Mesh_piece::size_type source,
+                                            Mesh_piece::size_type target, double angle_scale)
+{
+  const std::size_t n = piece.number_of_faces();
+  if(source >= n || target >= n || source == target)
+    throw Invalid_input("harmonic_face_sequence: the samples must be two different faces of the piece");
+  internal::Harmonic_system system(piece, angle_scale);
+  return system.sequence(source, target);
 }
 
 } // namespace Salient_cut
