@@ -144,22 +144,21 @@ public:
     const std::size_t n = piece.number_of_faces();
     if(!(angle_scale > 0.) || !std::isfinite(angle_scale))
       throw Invalid_input("harmonic_face_sequence: the angle scale must be a positive number");
-    weight_.resize(piece.edges().size());
     std::vector<double> diagonal(n, 0.);
     std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(2 * weight_.size() + n);
-    for(std::size_t i = 0; i < weight_.size(); ++i)
+    entries.reserve(2 * piece.edges().size() + n);
+    for(const Mesh_piece::Edge& pe : piece.edges())
     {
-      const Mesh_piece::Edge& pe = piece.edges()[i];
       const Dual_graph::Edge& e = piece.graph().edge(pe.dual_edge);
       double w = e.geodesic_length > 0. ? e.length / e.geodesic_length : 0.;
       if(e.concave)
         w *= std::exp(-e.normal_angle / angle_scale);
-      weight_[i] = w > 0. && std::isfinite(w) ? w : 0.;
-      diagonal[pe.face[0]] += weight_[i];
-      diagonal[pe.face[1]] += weight_[i];
-      entries.emplace_back(Eigen::Index(pe.face[0]), Eigen::Index(pe.face[1]), -weight_[i]);
-      entries.emplace_back(Eigen::Index(pe.face[1]), Eigen::Index(pe.face[0]), -weight_[i]);
+      if(!(w > 0.) || !std::isfinite(w))
+        w = 0.; // kept as an explicit zero: the pattern stays the graph's
+      diagonal[pe.face[0]] += w;
+      diagonal[pe.face[1]] += w;
+      entries.emplace_back(Eigen::Index(pe.face[0]), Eigen::Index(pe.face[1]), -w);
+      entries.emplace_back(Eigen::Index(pe.face[1]), Eigen::Index(pe.face[0]), -w);
     }
     // a face that no edge conducts to (a piece in several parts) keeps 0
     for(std::size_t f = 0; f < n; ++f)
@@ -221,7 +220,6 @@ public:
 
 private:
   const Mesh_piece* piece_;
-  std::vector<double> weight_;
   Eigen::SparseMatrix<double> matrix_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
 };
