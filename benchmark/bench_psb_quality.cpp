@@ -18,7 +18,7 @@
 //   --salient-thesis        the salient-cut method as published (Automatic_segmentation_options::thesis())
 //                           instead of the improved default
 //   --salient-set K=V,...   single settings of the salient-cut method, over the variant's: size=S (size
-//                           saturation), base=covariance|perimeter|loop (protrusion base), floor=0|1 (M's
+//                           saturation), base=covariance|perimeter|loop|curve (protrusion base), floor=0|1 (M's
 //                           concave weights at least epsilon), whiten=none|m|both, agree=0|1 (L and M must both pass),
 //                           min-salience=X, roots=0|1 (min-salience applies to a component's first cut)
 //                           unsegmentable-roots=0|1 (a component that fails the test is still cut when min-salience
@@ -380,7 +380,8 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
       std::get<0>(so.salience.terms()) = SpectralSeg::Salience::Size_term(std::stod(value));
     else if(key == "base")
       std::get<2>(so.salience.terms()) =
-        Protrusion_term(value == "loop" ? Protrusion_term::Base::cut_loop
+        Protrusion_term(value == "curve" ? Protrusion_term::Base::curve_covariance
+                        : value == "loop" ? Protrusion_term::Base::cut_loop
                         : value == "perimeter" ? Protrusion_term::Base::perimeter
                                                : Protrusion_term::Base::covariance);
     else if(key == "floor")

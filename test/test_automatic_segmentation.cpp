@@ -321,16 +321,24 @@ TEST_CASE("O(1) salience updates equal a recomputation at every position", "[aut
   }
 }
 
-TEST_CASE("our terms: saturating size and the cut loop's area, updated in O(1)", "[automatic]")
+TEST_CASE("our terms: saturating size, the cut loop's area and the curve's covariance, updated in O(1)", "[automatic]")
 {
   const Shape& s = star();
   const Mesh_piece piece = s.piece();
   const auto order = Salient_cut::face_sequence(piece, sequence_weights(s.graph), 0, piece.number_of_faces() - 1).order;
-  Recording_salience salience(Salience::improved_salience());
+  using Salience::Protrusion_term;
+  Recording_salience salience(Salience::Thesis_salience({0.1, 0.3, 0.6}, {0.1, 0.6, 0.3}, Salience::Size_term(0.1),
+                                                        Salience::Boundary_strength_term(),
+                                                        Protrusion_term(Protrusion_term::Base::cut_loop)));
   Salient_cut::salient_cut_search(piece, order, salience, Salience::Projection::structure);
   REQUIRE(salience.values.size() == order.size() - 1);
+  // the default's protrusion: the boundary's covariance as a curve
+  CHECK(std::get<2>(Salience::improved_salience().terms()).base() == Protrusion_term::Base::curve_covariance);
+  Recording_salience curve(Salience::improved_salience());
+  Salient_cut::salient_cut_search(piece, order, curve, Salience::Projection::structure);
+  REQUIRE(curve.values.size() == order.size() - 1);
   std::vector<std::uint8_t> in(piece.number_of_faces(), 0);
-  double area = 0., worst_size = 0., worst_loop = 0.;
+  double area = 0., worst_size = 0., worst_loop = 0., worst_curve = 0.;
   for(std::size_t i = 1; i < order.size(); ++i)
   {
     in[order[i - 1]] = 1;
@@ -366,9 +374,29 @@ TEST_CASE("our terms: saturating size and the cut loop's area, updated in O(1)",
     const double base = vector_area.norm();
     const double protrusion = base <= smaller ? 1. - base / smaller : 0.;
     worst_loop = std::max(worst_loop, std::abs(protrusion - salience.values[i - 1][2]));
+    // the curve's covariance: every point of every boundary edge, each
+    // edge weighted by its length
+    double length = 0.;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+    for(const auto& ab : loop)
+    {
+      const Eigen::Vector3d p = piece.point(ab.first), q = piece.point(ab.second);
+      const double l = (q - p).norm();
+      length += l;
+      first += 0.5 * l * (p + q);
+      second += l * ((p * p.transpose() + q * q.transpose()) / 3. + (p * q.transpose() + q * p.transpose()) / 6.);
+    }
+    const Eigen::Vector3d mean = first / length;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(second / length - mean * mean.transpose());
+    const Eigen::Vector3d lambda = eig.eigenvalues();
+    const double box = 4. * std::sqrt(std::max(0., lambda(2)) * std::max(0., lambda(1)));
+    const double curve_protrusion = box <= smaller ? 1. - box / smaller : 0.;
+    worst_curve = std::max(worst_curve, std::abs(curve_protrusion - curve.values[i - 1][2]));
   }
   CHECK(worst_size < 1e-12);
   CHECK(worst_loop < 1e-9);
+  CHECK(worst_curve < 1e-8);
   CHECK_THROWS_AS(Salience::Size_term(0.), Invalid_input);
   CHECK_THROWS_AS(Salience::Size_term(0.6), Invalid_input);
 }

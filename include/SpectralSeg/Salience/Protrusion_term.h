@@ -48,6 +48,15 @@ namespace Salience {
 /// still costs \f$O(1)\f$: the sums of \f$a \times b\f$ and of \f$b - a\f$
 /// are updated as faces join the prefix.
 ///
+/// `Base::curve_covariance` (our variant, the default of
+/// `improved_salience()`) keeps the thesis's \f$4\sqrt{\lambda_1\lambda_2}\f$
+/// but takes the covariance of the boundary as a curve: every point of
+/// every boundary edge, each edge weighted by its length. The covariance of
+/// the vertices depends on how the mesh spaces them along the cut; the
+/// curve's does not. Each position still costs \f$O(1)\f$: the length,
+/// first and second moments of the boundary edges are updated as edges join
+/// and leave it.
+///
 /// \cgalModels `SalienceTerm`
 class Protrusion_term : public Term_base
 {
@@ -57,11 +66,17 @@ public:
   {
     covariance, ///< \f$4\sqrt{\lambda_1\lambda_2}\f$ of the boundary vertices (the thesis)
     perimeter,  ///< \f$l^2 / 4\pi\f$, \f$l\f$ the boundary's length
-    cut_loop    ///< the area enclosed by the boundary (its vector area's norm)
+    cut_loop,   ///< the area enclosed by the boundary (its vector area's norm)
+    /// \f$4\sqrt{\lambda_1\lambda_2}\f$ of the covariance of the boundary as
+    /// a curve: each boundary edge's points, weighted by its length
+    curve_covariance
   };
 
   /// \param base how the base area is estimated
   explicit Protrusion_term(Base base = Base::covariance) : base_(base) {}
+
+  /// how the base area is estimated
+  Base base() const { return base_; }
 
   /// `"protrusion"`
   std::string name() const { return "protrusion"; }
@@ -80,6 +95,9 @@ public:
     edges_ = 0;
     cross_.setZero();
     step_.setZero();
+    curve_length_ = 0.;
+    curve_sum_.setZero();
+    curve_outer_.setZero();
   }
   void add_face(Mesh_piece::size_type f)
   {
@@ -106,11 +124,15 @@ public:
   {
     length_ += piece_->edge_length(e);
     ++edges_;
+    if(base_ == Base::curve_covariance)
+      curve_moments(e, 1.);
   }
   void remove_boundary_edge(Mesh_piece::size_type e)
   {
     length_ -= piece_->edge_length(e);
     --edges_;
+    if(base_ == Base::curve_covariance)
+      curve_moments(e, -1.);
   }
   void add_boundary_vertex(Mesh_piece::size_type v)
   {
@@ -133,6 +155,17 @@ public:
   {
     if(base_ == Base::perimeter)
       return edges_ > 0 ? std::max(0., length_) * std::max(0., length_) / (4. * CGAL_PI) : 0.;
+    if(base_ == Base::curve_covariance)
+    {
+      if(edges_ == 0 || !(curve_length_ > 0.))
+        return 0.;
+      const Eigen::Vector3d mean = curve_sum_ / curve_length_;
+      const Eigen::Matrix3d covariance = curve_outer_ / curve_length_ - mean * mean.transpose();
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+      solver.computeDirect(covariance, Eigen::EigenvaluesOnly);
+      const Eigen::Vector3d l = solver.eigenvalues(); // ascending
+      return 4. * std::sqrt(std::max(0., l(2)) * std::max(0., l(1)));
+    }
     if(count_ < 2)
       return 0.;
     if(base_ == Base::cut_loop)
@@ -154,14 +187,30 @@ public:
   double value(const Cut_state& s) const
   {
     const double area = s.smaller_area();
-    if(!(area > 0.) || count_ < 2)
+    if(!(area > 0.) || (base_ == Base::curve_covariance ? edges_ == 0 : count_ < 2))
       return 0.;
     const double base = base_area();
     return base <= area ? 1. - base / area : 0.;
   }
 
 private:
+  // the first and second moments of the boundary edge e as a segment,
+  // times its length, added with `sign`
+  void curve_moments(Mesh_piece::size_type e, double sign)
+  {
+    const Mesh_piece::Edge& edge = piece_->edges()[e];
+    const Eigen::Vector3d a = piece_->point(edge.vertex[0]) - origin_, b = piece_->point(edge.vertex[1]) - origin_;
+    const double l = sign * (b - a).norm();
+    curve_length_ += l;
+    curve_sum_ += 0.5 * l * (a + b);
+    curve_outer_ += l * ((a * a.transpose() + b * b.transpose()) / 3. +
+                         (a * b.transpose() + b * a.transpose()) / 6.);
+  }
+
   Base base_;
+  double curve_length_ = 0.;
+  Eigen::Vector3d curve_sum_ = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d curve_outer_ = Eigen::Matrix3d::Zero();
   double length_ = 0.;
   std::size_t edges_ = 0;
   const Mesh_piece* piece_ = nullptr;

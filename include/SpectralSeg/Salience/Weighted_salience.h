@@ -140,14 +140,15 @@ inline Thesis_salience thesis_salience(
 /// \ingroup PkgSpectralSegSalience
 /// \brief Our salience, the default of `Automatic_segmentation_options`:
 /// the thesis's terms and weights, with the size factor saturating at 10%
-/// of the piece (`Size_term(0.1)`) and the protrusion measured against the
-/// area the cut encloses (`Protrusion_term::Base::cut_loop`), so that a half
-/// of a symmetric body no longer outscores its limbs (doc/benchmarks.md,
-/// \ref ss_quality_salient).
+/// of the piece (`Size_term(0.1)`), so that a half of a symmetric body no
+/// longer outscores its limbs, and the protrusion's base estimated from the
+/// boundary as a curve (`Protrusion_term::Base::curve_covariance`), which
+/// does not depend on how the mesh spaces its vertices along the cut
+/// (doc/benchmarks.md, \ref ss_quality_salient).
 inline Thesis_salience improved_salience(Boundary_strength_term boundary = Boundary_strength_term())
 {
   return Thesis_salience({0.1, 0.3, 0.6}, {0.1, 0.6, 0.3}, Size_term(0.1), std::move(boundary),
-                         Protrusion_term(Protrusion_term::Base::cut_loop));
+                         Protrusion_term(Protrusion_term::Base::curve_covariance));
 }
 
 } // namespace Salience
