@@ -136,6 +136,8 @@ public:
   }
   void add_boundary_vertex(Mesh_piece::size_type v)
   {
+    if(base_ == Base::curve_covariance) // the edges carry its moments
+      return;
     const Eigen::Vector3d p = piece_->point(v) - origin_;
     ++count_;
     sum_ += p;
@@ -143,6 +145,8 @@ public:
   }
   void remove_boundary_vertex(Mesh_piece::size_type v)
   {
+    if(base_ == Base::curve_covariance)
+      return;
     const Eigen::Vector3d p = piece_->point(v) - origin_;
     --count_;
     sum_ -= p;
@@ -159,12 +163,7 @@ public:
     {
       if(edges_ == 0 || !(curve_length_ > 0.))
         return 0.;
-      const Eigen::Vector3d mean = curve_sum_ / curve_length_;
-      const Eigen::Matrix3d covariance = curve_outer_ / curve_length_ - mean * mean.transpose();
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-      solver.computeDirect(covariance, Eigen::EigenvaluesOnly);
-      const Eigen::Vector3d l = solver.eigenvalues(); // ascending
-      return 4. * std::sqrt(std::max(0., l(2)) * std::max(0., l(1)));
+      return box_area(curve_length_, curve_sum_, curve_outer_);
     }
     if(count_ < 2)
       return 0.;
@@ -174,13 +173,7 @@ public:
       const Eigen::Vector3d o = sum_ / static_cast<double>(count_);
       return 0.5 * (cross_ - o.cross(step_)).norm();
     }
-    const double m = static_cast<double>(count_);
-    const Eigen::Vector3d mean = sum_ / m;
-    const Eigen::Matrix3d covariance = outer_ / m - mean * mean.transpose();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-    solver.computeDirect(covariance, Eigen::EigenvaluesOnly);
-    const Eigen::Vector3d l = solver.eigenvalues(); // ascending
-    return 4. * std::sqrt(std::max(0., l(2)) * std::max(0., l(1)));
+    return box_area(static_cast<double>(count_), sum_, outer_);
   }
 
   /// the factor at the current position
@@ -194,6 +187,17 @@ public:
   }
 
 private:
+  // 4 sqrt(l1 l2) of the covariance of a distribution of total weight
+  // `weight`, first moment `sum` and second moment `outer`
+  static double box_area(double weight, const Eigen::Vector3d& sum, const Eigen::Matrix3d& outer)
+  {
+    const Eigen::Vector3d mean = sum / weight;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(outer / weight - mean * mean.transpose(), Eigen::EigenvaluesOnly);
+    const Eigen::Vector3d l = solver.eigenvalues(); // ascending
+    return 4. * std::sqrt(std::max(0., l(2)) * std::max(0., l(1)));
+  }
+
   // the first and second moments of the boundary edge e as a segment,
   // times its length, added with `sign`
   void curve_moments(Mesh_piece::size_type e, double sign)
