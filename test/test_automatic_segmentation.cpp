@@ -285,6 +285,53 @@ TEST_CASE("the harmonic sequence runs from 0 to 1 and puts its level sets on con
   CHECK_THROWS_AS(segment_automatically(s.graph, sequence_weights(s.graph), bad), Invalid_input);
 }
 
+TEST_CASE("an elimination order inherited from the whole serves a piece as its own order does", "[automatic]")
+{
+  const Shape s(body());
+  const Mesh_piece whole = s.piece();
+  SpectralSeg::internal::Fill_reducing_order order(s.graph.geometry().number_of_vertices());
+  // a piece's elements never ordered: no inherited order
+  CHECK(order.restricted(whole.vertices()).size() == 0);
+  order.assign(whole.vertices(), SpectralSeg::internal::amd_permutation(whole.number_of_vertices(), whole.vertex_edges()));
+  // the body without its left leg
+  std::vector<Mesh_piece::size_type> faces;
+  for(Mesh_piece::size_type f = 0; f < whole.number_of_faces(); ++f)
+    if(s.soup.face_part[whole.faces()[f]] != 1)
+      faces.push_back(whole.faces()[f]);
+  const Mesh_piece piece(s.graph, faces);
+  REQUIRE(piece.number_of_vertices() > Segmentability::Projection_options().dense_limit); // the sparse path
+  const SpectralSeg::internal::Elimination_permutation p = order.restricted(piece.vertices());
+  REQUIRE(p.size() == Eigen::Index(piece.number_of_vertices()));
+  std::vector<int> seen(piece.number_of_vertices(), 0);
+  for(Eigen::Index i = 0; i < p.size(); ++i)
+    ++seen.at(std::size_t(p.indices()(i)));
+  CHECK(std::count(seen.begin(), seen.end(), 1) == Eigen::Index(seen.size())); // a permutation
+  // solves (L + I) x = b as the default factorisation does
+  Eigen::SparseMatrix<double> a = Segmentability::projection_operator(piece, Salience::Projection::structure, nullptr);
+  Eigen::SparseMatrix<double> id(a.rows(), a.cols());
+  id.setIdentity();
+  a += id;
+  Eigen::VectorXd b(a.rows());
+  for(Eigen::Index i = 0; i < b.size(); ++i)
+    b(i) = std::sin(double(i));
+  SpectralSeg::internal::Permuted_ldlt ldlt;
+  ldlt.set_permutation(p);
+  ldlt.compute(a);
+  REQUIRE(ldlt.info() == Eigen::Success);
+  Eigen::VectorXd x;
+  ldlt.solve(b, x);
+  CHECK((a * x - b).norm() < 1e-10 * b.norm());
+  // the same projection's eigenvalues in either order
+  for(const Salience::Projection which : {Salience::Projection::structure, Salience::Projection::geometry})
+  {
+    const Segmentability::Planar_projection own = Segmentability::spectral_projection(piece, which, &s.curvatures);
+    const Segmentability::Planar_projection inherited = Segmentability::internal::spectral_projection(
+      piece, which, &s.curvatures, Segmentability::Projection_options(), p);
+    CHECK(std::abs(own.eigenvalues(0) - inherited.eigenvalues(0)) < 1e-7 * own.eigenvalues(1));
+    CHECK(std::abs(own.eigenvalues(1) - inherited.eigenvalues(1)) < 1e-7 * own.eigenvalues(1));
+  }
+}
+
 TEST_CASE("O(1) salience updates equal a recomputation at every position", "[automatic]")
 {
   const Shape& s = star();

@@ -260,6 +260,23 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     total_area += h.nodes[i].area;
   std::size_t parts = h.roots.size(), cuts = 0;
   SalienceModel salience = options.salience;
+  // the elimination orders of each component's vertices and faces, made on
+  // its root and inherited by its pieces (the sparse factorisations of the
+  // projections and of the harmonic field)
+  SpectralSeg::internal::Fill_reducing_order vertex_order(graph.geometry().number_of_vertices());
+  SpectralSeg::internal::Fill_reducing_order face_order(n);
+  for(std::size_t i : h.roots)
+  {
+    const Mesh_piece piece(graph, h.nodes[i].faces);
+    vertex_order.assign(piece.vertices(),
+                        SpectralSeg::internal::amd_permutation(piece.number_of_vertices(), piece.vertex_edges()));
+    std::vector<std::pair<Mesh_piece::size_type, Mesh_piece::size_type>> face_pairs;
+    face_pairs.reserve(piece.edges().size());
+    for(const Mesh_piece::Edge& e : piece.edges())
+      face_pairs.emplace_back(e.face[0], e.face[1]);
+    face_order.assign(piece.faces(), SpectralSeg::internal::amd_permutation(piece.number_of_faces(), face_pairs));
+  }
+  lap("pieces");
   while(!queue.empty())
   {
     const std::size_t i = queue.top();
@@ -286,11 +303,12 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     std::unique_ptr<Salient_cut::internal::Harmonic_system> system;
     std::future<std::unique_ptr<Salient_cut::internal::Harmonic_system>> pending;
     if(harmonic && exec.threads() > 1)
-      pending = std::async(std::launch::async, [&piece, &options] {
-        return std::make_unique<Salient_cut::internal::Harmonic_system>(piece, options.sequence_angle_scale);
+      pending = std::async(std::launch::async, [&piece, &options, &face_order] {
+        return std::make_unique<Salient_cut::internal::Harmonic_system>(piece, options.sequence_angle_scale,
+                                                                        face_order.restricted(piece.faces()));
       });
-    const Segmentability::Segmentability_result test =
-      Segmentability::test_segmentability(piece, geometry ? &curvatures : nullptr, options.segmentability);
+    const Segmentability::Segmentability_result test = Segmentability::internal::test_segmentability(
+      piece, geometry ? &curvatures : nullptr, options.segmentability, vertex_order.restricted(piece.vertices()));
     lap("segmentability");
     {
       Part_node& node = h.nodes[i];
@@ -328,7 +346,7 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
       if(harmonic && !system)
         system = pending.valid() ? pending.get()
                                  : std::make_unique<Salient_cut::internal::Harmonic_system>(
-                                     piece, options.sequence_angle_scale);
+                                     piece, options.sequence_angle_scale, face_order.restricted(piece.faces()));
       const Salient_cut::Face_sequence seq = harmonic ? system->sequence(st.first, st.second)
                                                       : Salient_cut::face_sequence(piece, weights, st.first,
                                                                                    st.second, exec);

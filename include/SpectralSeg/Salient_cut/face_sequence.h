@@ -9,6 +9,7 @@
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/Mesh_piece.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/Fill_reducing_order.h>
 #include <SpectralSeg/internal/parallel_for.h>
 
 #include <Eigen/Sparse>
@@ -139,8 +140,13 @@ namespace internal {
 class Harmonic_system
 {
 public:
-  Harmonic_system(const Mesh_piece& piece, double angle_scale) : piece_(&piece)
+  // face_order: the elimination order of the piece's faces (empty: their
+  // approximate minimum degree order)
+  Harmonic_system(const Mesh_piece& piece, double angle_scale,
+                  SpectralSeg::internal::Elimination_permutation face_order = SpectralSeg::internal::Elimination_permutation())
+    : piece_(&piece)
   {
+    solver_.set_permutation(std::move(face_order));
     const std::size_t n = piece.number_of_faces();
     if(!(angle_scale > 0.) || !std::isfinite(angle_scale))
       throw Invalid_input("harmonic_face_sequence: the angle scale must be a positive number");
@@ -166,7 +172,7 @@ public:
     matrix_.resize(Eigen::Index(n), Eigen::Index(n));
     matrix_.setFromTriplets(entries.begin(), entries.end());
     matrix_.makeCompressed();
-    solver_.analyzePattern(matrix_);
+    solver_.analyze_pattern(matrix_);
   }
 
   Face_sequence sequence(Mesh_piece::size_type source, Mesh_piece::size_type target)
@@ -199,7 +205,8 @@ public:
     solver_.factorize(a);
     if(solver_.info() != Eigen::Success)
       throw Error("harmonic_face_sequence: the field's system could not be factorised");
-    const Eigen::VectorXd u = solver_.solve(rhs);
+    Eigen::VectorXd u;
+    solver_.solve(rhs, u);
     Face_sequence s;
     s.source = source;
     s.target = target;
@@ -221,7 +228,7 @@ public:
 private:
   const Mesh_piece* piece_;
   Eigen::SparseMatrix<double> matrix_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
+  SpectralSeg::internal::Permuted_ldlt solver_;
 };
 
 } // namespace internal

@@ -71,19 +71,15 @@ struct Segmentability_result
   }
 };
 
-/// \ingroup PkgSpectralSegSegmentability
-/// \brief Tests whether a piece is segmentable (thesis fig. 6.7): the
-/// contours of the L projection, of its MDS re-embedding, of the M
-/// projection and of its MDS re-embedding are scored in turn with
-/// \f$S = 1 - \max(C_1, C_2^{w_{cvx}})\f$; the first score above
-/// \f$\eta\f$ makes the piece segmentable. With `structure_only`, only the
-/// L tests run.
-///
-/// \param piece a connected piece
-/// \param curvatures the mesh's principal curvatures (needed for the M tests)
-/// \param options \f$\eta\f$, modes and the contour and solver parameters
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// test_segmentability() with the projections' sparse factorisations in the
+// elimination order `vertex_order` of the piece's vertices (empty: their
+// approximate minimum degree order)
 inline Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
-                                                 const Segmentability_options& options = Segmentability_options())
+                                                 const Segmentability_options& options,
+                                                 const SpectralSeg::internal::Elimination_permutation& vertex_order)
 {
   Segmentability_result r;
   r.score = 0.;
@@ -93,7 +89,7 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
   for(int p = 0; p < projections; ++p)
   {
     const Projection kind = p == 0 ? Projection::structure : Projection::geometry;
-    Planar_projection proj = spectral_projection(piece, kind, curvatures, options.projection);
+    Planar_projection proj = internal::spectral_projection(piece, kind, curvatures, options.projection, vertex_order);
     // the MDS re-embedding is computed only when the plain contour fails
     Contour_analysis a = analyse_contour(proj.points, piece.triangles(), options.contour, false);
     const Test plain = p == 0 ? Test::structure : Test::geometry;
@@ -158,6 +154,26 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
     }
   }
   return r;
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief Tests whether a piece is segmentable (thesis fig. 6.7): the
+/// contours of the L projection, of its MDS re-embedding, of the M
+/// projection and of its MDS re-embedding are scored in turn with
+/// \f$S = 1 - \max(C_1, C_2^{w_{cvx}})\f$; the first score above
+/// \f$\eta\f$ makes the piece segmentable. With `structure_only`, only the
+/// L tests run.
+///
+/// \param piece a connected piece
+/// \param curvatures the mesh's principal curvatures (needed for the M tests)
+/// \param options \f$\eta\f$, modes and the contour and solver parameters
+inline Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
+                                                 const Segmentability_options& options = Segmentability_options())
+{
+  return internal::test_segmentability(piece, curvatures, options, SpectralSeg::internal::Elimination_permutation());
 }
 
 /// \ingroup PkgSpectralSegSegmentability

@@ -10,6 +10,7 @@
 #include <SpectralSeg/Salience/Cut_state.h>
 #include <SpectralSeg/Segmentability/principal_curvatures.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/Fill_reducing_order.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -148,12 +149,16 @@ inline Eigen::SparseMatrix<double> projection_operator(const Mesh_piece& piece, 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// (A - sigma I)^{-1} for Spectra, by a sparse Cholesky factorisation.
+// (A - sigma I)^{-1} for Spectra, by a sparse Cholesky factorisation in a
+// given elimination order (empty: the approximate minimum degree of A's)
 class Cholesky_shift_solve
 {
 public:
   typedef double Scalar;
-  explicit Cholesky_shift_solve(const Eigen::SparseMatrix<double>& a) : a_(a) {}
+  Cholesky_shift_solve(const Eigen::SparseMatrix<double>& a, SpectralSeg::internal::Elimination_permutation order) : a_(a)
+  {
+    solver_.set_permutation(std::move(order));
+  }
   Eigen::Index rows() const { return a_.rows(); }
   Eigen::Index cols() const { return a_.cols(); }
   void set_shift(double sigma)
@@ -168,37 +173,21 @@ public:
   {
     Eigen::Map<const Eigen::VectorXd> in(x, a_.rows());
     Eigen::Map<Eigen::VectorXd> out(y, a_.rows());
-    out = solver_.solve(in);
+    solver_.solve(in, out);
   }
 
 private:
   const Eigen::SparseMatrix<double>& a_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
+  SpectralSeg::internal::Permuted_ldlt solver_;
 };
 
-} // namespace internal
-/// \endcond
 
-/// \ingroup PkgSpectralSegSegmentability
-/// \brief Projects a piece to the plane: the vertex coordinates filtered to
-/// the three smallest eigenvectors of `projection_operator()`
-/// (\f$\tilde X = \Xi_{[1..3]}\Xi_{[1..3]}^T X\f$); the first eigenvector
-/// is constant, so the projected points lie in a plane, returned in an
-/// orthonormal basis of it.
-///
-/// The eigenvectors come from a dense solver for small pieces and from
-/// Spectra's shift-invert Lanczos method (`SymEigsShiftSolver`, shift just
-/// below 0, sparse Cholesky factorisation) for large ones; both are
-/// deterministic.
-///
-/// \param piece the piece (connected, at least 3 vertices)
-/// \param which L or M
-/// \param curvatures the mesh's principal curvatures (for M)
-/// \param options solver parameters
-/// \throws Error if the eigensolver does not converge
+// spectral_projection() with the sparse factorisations in the elimination
+// order `vertex_order` of the piece's vertices (empty: their approximate
+// minimum degree order)
 inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection which,
-                                             const Principal_curvatures* curvatures,
-                                             const Projection_options& options = Projection_options())
+                                             const Principal_curvatures* curvatures, const Projection_options& options,
+                                             const SpectralSeg::internal::Elimination_permutation& vertex_order)
 {
   const std::size_t n = piece.number_of_vertices();
   Planar_projection p;
@@ -221,7 +210,7 @@ inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection
   {
     const double mean_diagonal = op.diagonal().sum() / double(n);
     const double sigma = -1e-6 * (mean_diagonal > 0. ? mean_diagonal : 1.);
-    internal::Cholesky_shift_solve shift(op);
+    Cholesky_shift_solve shift(op, vertex_order);
     const Eigen::Index ncv = static_cast<Eigen::Index>(std::min<std::size_t>(n, std::max<std::size_t>(options.lanczos_vectors, 7)));
     Spectra::SymEigsShiftSolver<internal::Cholesky_shift_solve> eigs(shift, 3, ncv, sigma);
     eigs.init();
@@ -280,6 +269,33 @@ inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection
     }
   }
   return p;
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegSegmentability
+/// \brief Projects a piece to the plane: the vertex coordinates filtered to
+/// the three smallest eigenvectors of `projection_operator()`
+/// (\f$\tilde X = \Xi_{[1..3]}\Xi_{[1..3]}^T X\f$); the first eigenvector
+/// is constant, so the projected points lie in a plane, returned in an
+/// orthonormal basis of it.
+///
+/// The eigenvectors come from a dense solver for small pieces and from
+/// Spectra's shift-invert Lanczos method (`SymEigsShiftSolver`, shift just
+/// below 0, sparse Cholesky factorisation) for large ones; both are
+/// deterministic.
+///
+/// \param piece the piece (connected, at least 3 vertices)
+/// \param which L or M
+/// \param curvatures the mesh's principal curvatures (for M)
+/// \param options solver parameters
+/// \throws Error if the eigensolver does not converge
+inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection which,
+                                             const Principal_curvatures* curvatures,
+                                             const Projection_options& options = Projection_options())
+{
+  return internal::spectral_projection(piece, which, curvatures, options, SpectralSeg::internal::Elimination_permutation());
 }
 
 } // namespace Segmentability
