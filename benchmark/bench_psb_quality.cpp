@@ -404,6 +404,8 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
                                         : Options_type::Sequence::concave_harmonic;
     else if(key == "sequence-scale")
       so.sequence_angle_scale = std::stod(value);
+    else if(key == "chain")
+      so.segmentability.chain_eigenvalue_ratio = std::stod(value);
     else if(key == "roots")
       so.min_cut_salience_at_roots = value == "1";
     else

@@ -178,6 +178,38 @@ TEST_CASE("segmentability: a sphere and a box are not segmentable, a star and a 
   }
 }
 
+TEST_CASE("the re-embedded contours are not tested on a chain", "[automatic]")
+{
+  // a bar of 10 voxels in a row: its L spectrum is a path's
+  std::vector<std::array<int, 3>> cells;
+  for(int x = 0; x < 10; ++x)
+    cells.push_back({x, 0, 0});
+  const Shape bar(test_meshes::voxel_union(cells, 3));
+  const Shape& branching = star();
+  const auto ratio = [](const Shape& s) {
+    const auto p = Segmentability::spectral_projection(s.piece(), Salience::Projection::structure, &s.curvatures);
+    return p.eigenvalues(1) / p.eigenvalues(0);
+  };
+  INFO("bar " << ratio(bar) << " star " << ratio(branching));
+  CHECK(ratio(bar) > 3.);
+  CHECK(ratio(branching) < 2.);
+  Segmentability::Segmentability_options options;
+  const auto each = Segmentability::test_segmentability(bar.piece(), &bar.curvatures, options);
+  INFO("scores " << each.scores[0] << " " << each.scores[1] << " " << each.scores[2] << " " << each.scores[3]);
+  // the straight bar passes only by a re-embedding (the thesis's test)
+  CHECK(each.segmentable);
+  CHECK((each.test == Segmentability::Test::structure_normalized ||
+         each.test == Segmentability::Test::geometry_normalized));
+  options.chain_eigenvalue_ratio = 3.;
+  const auto chain = Segmentability::test_segmentability(bar.piece(), &bar.curvatures, options);
+  CHECK_FALSE(chain.segmentable);
+  CHECK(std::isnan(chain.scores[std::size_t(Segmentability::Test::structure_normalized)]));
+  CHECK(std::isnan(chain.scores[std::size_t(Segmentability::Test::geometry_normalized)]));
+  CHECK(std::isfinite(chain.scores[std::size_t(Segmentability::Test::geometry)]));
+  // a branching piece keeps every test
+  CHECK(Segmentability::test_segmentability(branching.piece(), &branching.curvatures, options).segmentable);
+}
+
 TEST_CASE("bending samples land on two different limbs of the star", "[automatic]")
 {
   const Shape& s = star();

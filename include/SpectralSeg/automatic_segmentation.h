@@ -121,6 +121,7 @@ struct Automatic_segmentation_options
     Segmentability::Segmentability_options s;
     s.projection.concave_floor = true;
     s.projection.whiten = Segmentability::Projection_options::Whitening::geometry;
+    s.chain_eigenvalue_ratio = 3.;
     return s;
   }
 

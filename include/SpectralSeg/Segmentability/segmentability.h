@@ -41,6 +41,13 @@ struct Segmentability_options
   /// its M contour pass; a part that sticks out shows in both. Ignored with
   /// `structure_only`.
   bool require_agreement = false;
+  /// the MDS re-embedded contours are not tested on a piece whose L
+  /// spectrum is that of a chain, \f$\lambda_3 \ge r\,\lambda_2\f$ (our
+  /// addition; 0, the thesis: always tested). A path has \f$r \to 4\f$, as
+  /// has a tube longer than its circumference; branching pieces have 1 to 2.
+  /// The projections of a chain are thin arcs, and the re-embedding of an
+  /// arc shows only its noise: a finger or a straight bar then passes.
+  double chain_eigenvalue_ratio = 0.;
   /// raster resolution, smoothing tolerance, contour size, \f$w_{cvx}\f$
   Contour_options contour;
   /// operators and eigensolver
@@ -86,6 +93,7 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
   const int projections = options.structure_only || !curvatures ? 1 : 2;
   const bool agreement = options.require_agreement && projections == 2;
   Segmentability_result first; // with agreement: the first family that passed
+  bool chain = false;           // whether the piece's L spectrum is a chain's
   for(int p = 0; p < projections; ++p)
   {
     const Projection kind = p == 0 ? Projection::structure : Projection::geometry;
@@ -98,8 +106,13 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
     r.projection = std::move(proj);
     r.contour = std::move(a);
     bool passed = false;
+    if(p == 0)
+      chain = options.chain_eigenvalue_ratio > 0. &&
+              r.projection.eigenvalues(1) >= options.chain_eigenvalue_ratio * r.projection.eigenvalues(0);
     for(Test t : {plain, normalized})
     {
+      if(t == normalized && chain)
+        break;
       if(t == normalized)
       {
         add_normalized(r.contour, options.contour);
