@@ -130,13 +130,14 @@ inline Face_sequence face_sequence(const Mesh_piece& piece, const std::vector<do
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// The system of harmonic_face_sequence() for one piece: the weighted
-// Laplacian of its dual graph over all its faces and the symbolic analysis
-// of its Cholesky factorisation (fill-reducing ordering, elimination tree),
-// which do not depend on the samples, so that they can be made while the
-// samples are being chosen and serve several pairs. A sample's row and
-// column become those of the identity (explicit zeros keep the pattern),
-// which is the elimination of a Dirichlet value.
+// The system of harmonic_face_sequence() for one piece, factorised once for
+// every pair of samples: the weighted Laplacian of its dual graph, one face
+// of each conducting component grounded (its row and column those of the
+// identity; explicit zeros keep the pattern). The field from s (0) to t (1)
+// is the potential of a unit current sent from t to s, normalised:
+// u = (phi - phi_s) / (phi_t - phi_s), harmonic at every other face, so
+// each pair costs one solve. Everything here may run on a second thread
+// while the piece is tested.
 class Harmonic_system
 {
 public:
@@ -151,68 +152,82 @@ public:
     if(!(angle_scale > 0.) || !std::isfinite(angle_scale))
       throw Invalid_input("harmonic_face_sequence: the angle scale must be a positive number");
     std::vector<double> diagonal(n, 0.);
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(2 * piece.edges().size() + n);
-    for(const Mesh_piece::Edge& pe : piece.edges())
+    std::vector<double> weight(piece.edges().size(), 0.);
+    // the conducting components (union-find; the smallest face is the root)
+    component_.resize(n);
+    std::iota(component_.begin(), component_.end(), Mesh_piece::size_type(0));
+    const auto find = [&](Mesh_piece::size_type f) {
+      while(component_[f] != f)
+        f = component_[f] = component_[component_[f]];
+      return f;
+    };
+    for(std::size_t k = 0; k < piece.edges().size(); ++k)
     {
+      const Mesh_piece::Edge& pe = piece.edges()[k];
       const Dual_graph::Edge& e = piece.graph().edge(pe.dual_edge);
       double w = e.geodesic_length > 0. ? e.length / e.geodesic_length : 0.;
       if(e.concave)
         w *= std::exp(-e.normal_angle / angle_scale);
       if(!(w > 0.) || !std::isfinite(w))
-        w = 0.; // kept as an explicit zero: the pattern stays the graph's
+        continue; // kept as an explicit zero: the pattern stays the graph's
+      weight[k] = w;
       diagonal[pe.face[0]] += w;
       diagonal[pe.face[1]] += w;
+      const Mesh_piece::size_type a = find(pe.face[0]), b = find(pe.face[1]);
+      if(a != b)
+        component_[std::max(a, b)] = std::min(a, b);
+    }
+    for(Mesh_piece::size_type f = 0; f < n; ++f)
+      component_[f] = find(f);
+    const auto grounded = [&](Mesh_piece::size_type f) { return component_[f] == f; };
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(2 * piece.edges().size() + n);
+    for(std::size_t k = 0; k < piece.edges().size(); ++k)
+    {
+      const Mesh_piece::Edge& pe = piece.edges()[k];
+      const double w = grounded(pe.face[0]) || grounded(pe.face[1]) ? 0. : weight[k];
       entries.emplace_back(Eigen::Index(pe.face[0]), Eigen::Index(pe.face[1]), -w);
       entries.emplace_back(Eigen::Index(pe.face[1]), Eigen::Index(pe.face[0]), -w);
     }
-    // a face that no edge conducts to (a piece in several parts) keeps 0
-    for(std::size_t f = 0; f < n; ++f)
-      entries.emplace_back(Eigen::Index(f), Eigen::Index(f), diagonal[f] > 0. ? diagonal[f] : 1.);
-    matrix_.resize(Eigen::Index(n), Eigen::Index(n));
-    matrix_.setFromTriplets(entries.begin(), entries.end());
-    matrix_.makeCompressed();
-    solver_.analyze_pattern(matrix_);
+    for(Mesh_piece::size_type f = 0; f < n; ++f)
+      entries.emplace_back(Eigen::Index(f), Eigen::Index(f), grounded(f) ? 1. : diagonal[f]);
+    Eigen::SparseMatrix<double> matrix(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    matrix.setFromTriplets(entries.begin(), entries.end());
+    matrix.makeCompressed();
+    solver_.compute(matrix);
+    if(solver_.info() != Eigen::Success)
+      throw Error("harmonic_face_sequence: the field's system could not be factorised");
   }
 
-  Face_sequence sequence(Mesh_piece::size_type source, Mesh_piece::size_type target)
+  Face_sequence sequence(Mesh_piece::size_type source, Mesh_piece::size_type target) const
   {
     const Mesh_piece& piece = *piece_;
     const std::size_t n = piece.number_of_faces();
     if(source >= n || target >= n || source == target)
       throw Invalid_input("harmonic_face_sequence: the samples must be two different faces of the piece");
-    Eigen::SparseMatrix<double> a = matrix_;
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(n));
-    rhs(Eigen::Index(target)) = 1.;
-    for(Eigen::Index c = 0; c < a.outerSize(); ++c)
-      for(Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it)
-      {
-        const bool fixed_row = it.row() == Eigen::Index(source) || it.row() == Eigen::Index(target);
-        const bool fixed_col = c == Eigen::Index(source) || c == Eigen::Index(target);
-        if(it.row() == c)
-        {
-          if(fixed_row)
-            it.valueRef() = 1.;
-        }
-        else if(fixed_row || fixed_col)
-        {
-          // a free row's term in a sample's value moves to the right-hand side
-          if(fixed_col && !fixed_row && c == Eigen::Index(target))
-            rhs(it.row()) -= it.value();
-          it.valueRef() = 0.;
-        }
-      }
-    solver_.factorize(a);
-    if(solver_.info() != Eigen::Success)
-      throw Error("harmonic_face_sequence: the field's system could not be factorised");
-    Eigen::VectorXd u;
-    solver_.solve(rhs, u);
     Face_sequence s;
     s.source = source;
     s.target = target;
-    s.key.resize(n);
-    for(std::size_t f = 0; f < n; ++f)
-      s.key[f] = f == source ? 0. : f == target ? 1. : std::min(1., std::max(0., u(Eigen::Index(f))));
+    s.key.assign(n, 0.);
+    if(component_[source] == component_[target])
+    {
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(n));
+      rhs(Eigen::Index(target)) += 1.;
+      rhs(Eigen::Index(source)) -= 1.;
+      rhs(Eigen::Index(component_[source])) = 0.; // the ground
+      Eigen::VectorXd phi;
+      solver_.solve(rhs, phi);
+      const double low = phi(Eigen::Index(source)), span = phi(Eigen::Index(target)) - low;
+      for(Mesh_piece::size_type f = 0; f < n; ++f)
+        if(component_[f] == component_[source])
+          s.key[f] = span > 0. ? std::min(1., std::max(0., (phi(Eigen::Index(f)) - low) / span)) : 0.;
+    }
+    else // no current flows between them: each sample's part takes its value
+      for(Mesh_piece::size_type f = 0; f < n; ++f)
+        if(component_[f] == component_[target])
+          s.key[f] = 1.;
+    s.key[source] = 0.;
+    s.key[target] = 1.;
     s.order.resize(n);
     std::iota(s.order.begin(), s.order.end(), Mesh_piece::size_type(0));
     // the samples first and last whatever the rounding
@@ -227,7 +242,7 @@ public:
 
 private:
   const Mesh_piece* piece_;
-  Eigen::SparseMatrix<double> matrix_;
+  std::vector<Mesh_piece::size_type> component_; // the grounded face of each face's conducting component
   SpectralSeg::internal::Permuted_ldlt solver_;
 };
 
