@@ -261,16 +261,19 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     total_area += h.nodes[i].area;
   std::size_t parts = h.roots.size(), cuts = 0;
   SalienceModel salience = options.salience;
+  const bool harmonic = options.sequence == Options::Sequence::concave_harmonic;
   // the elimination orders of each component's vertices and faces, made on
   // its root and inherited by its pieces (the sparse factorisations of the
   // projections and of the harmonic field)
   SpectralSeg::internal::Fill_reducing_order vertex_order(graph.geometry().number_of_vertices());
-  SpectralSeg::internal::Fill_reducing_order face_order(n);
+  SpectralSeg::internal::Fill_reducing_order face_order(harmonic ? n : 0);
   for(std::size_t i : h.roots)
   {
     const Mesh_piece piece(graph, h.nodes[i].faces);
     vertex_order.assign(piece.vertices(),
                         SpectralSeg::internal::amd_permutation(piece.number_of_vertices(), piece.vertex_edges()));
+    if(!harmonic)
+      continue;
     std::vector<std::pair<Mesh_piece::size_type, Mesh_piece::size_type>> face_pairs;
     face_pairs.reserve(piece.edges().size());
     for(const Mesh_piece::Edge& e : piece.edges())
@@ -300,7 +303,6 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     lap("pieces");
     // the harmonic sequence's system does not depend on the samples: made
     // on a second thread while the piece is tested (the same system either way)
-    const bool harmonic = options.sequence == Options::Sequence::concave_harmonic;
     std::unique_ptr<Salient_cut::internal::Harmonic_system> system;
     std::future<std::unique_ptr<Salient_cut::internal::Harmonic_system>> pending;
     if(harmonic && exec.threads() > 1)

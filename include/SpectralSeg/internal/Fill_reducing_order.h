@@ -94,17 +94,9 @@ private:
 class Permuted_ldlt
 {
 public:
-  // the permutation to use; call before analyze_pattern() or compute()
+  // the permutation to use; call before compute()
   void set_permutation(Elimination_permutation p) { p_ = std::move(p); }
-  const Elimination_permutation& permutation() const { return p_; }
 
-  void analyze_pattern(const Eigen::SparseMatrix<double>& a)
-  {
-    if(p_.size() != a.rows())
-      p_ = amd_of(a);
-    ldlt_.analyzePattern(twisted(a));
-  }
-  void factorize(const Eigen::SparseMatrix<double>& a) { ldlt_.factorize(twisted(a)); }
   void compute(const Eigen::SparseMatrix<double>& a)
   {
     if(p_.size() != a.rows())
