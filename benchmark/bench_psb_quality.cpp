@@ -23,7 +23,8 @@
 //                           min-salience=X, roots=0|1 (min-salience applies to a component's first cut)
 //                           unsegmentable-roots=0|1 (a component that fails the test is still cut when min-salience
 //                           allows), pairs=N (sample-face pairs tried per piece),
-//                           sequence=distance|harmonic, sequence-scale=S (the harmonic sequence's angle scale)
+//                           sequence=distance|harmonic, sequence-scale=S (the harmonic sequence's angle scale),
+//                           chain=R (chain eigenvalue ratio), continuation=X (L threshold below a passed piece)
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --labels-dir DIR        each result's labels, METHOD_ID.seg, one per face of the .off file
@@ -406,6 +407,8 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
       so.sequence_angle_scale = std::stod(value);
     else if(key == "chain")
       so.segmentability.chain_eigenvalue_ratio = std::stod(value);
+    else if(key == "continuation")
+      so.continuation_threshold = std::stod(value);
     else if(key == "roots")
       so.min_cut_salience_at_roots = value == "1";
     else

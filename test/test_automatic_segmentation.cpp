@@ -210,6 +210,42 @@ TEST_CASE("the re-embedded contours are not tested on a chain", "[automatic]")
   CHECK(Segmentability::test_segmentability(branching.piece(), &branching.curvatures, options).segmentable);
 }
 
+TEST_CASE("below a piece that passed an L test, an L contour passes at the continuation threshold", "[automatic]")
+{
+  const Shape& s = star();
+  const Mesh_piece piece = s.piece();
+  const auto passed = Segmentability::test_segmentability(piece, &s.curvatures);
+  REQUIRE(passed.segmentable);
+  REQUIRE(passed.test == Segmentability::Test::structure);
+  const double l = passed.scores[std::size_t(Segmentability::Test::structure)];
+  // a threshold above every test's score: nothing passes
+  Segmentability::Segmentability_options strict;
+  strict.threshold = 1.;
+  const auto none = Segmentability::test_segmentability(piece, &s.curvatures, strict);
+  REQUIRE_FALSE(none.segmentable);
+  // with a lower threshold for the L contours, the L test passes after all,
+  // on its own projection and contour, every test's score kept
+  const auto fallback =
+    Segmentability::internal::test_segmentability(piece, &s.curvatures, strict, {}, 0.5 * l);
+  CHECK(fallback.segmentable);
+  CHECK(fallback.test == Segmentability::Test::structure);
+  CHECK(fallback.score == l);
+  CHECK(fallback.projection_kind() == Salience::Projection::structure);
+  for(std::size_t t = 0; t < 4; ++t)
+    CHECK((fallback.scores[t] == none.scores[t] || (std::isnan(fallback.scores[t]) && std::isnan(none.scores[t]))));
+  const auto st = Segmentability::bending_sample_faces(piece, fallback);
+  CHECK(s.soup.face_part[piece.faces()[st.first]] != s.soup.face_part[piece.faces()[st.second]]);
+  // a lower threshold than the L contours' scores is needed
+  const double l_mds = none.scores[std::size_t(Segmentability::Test::structure_normalized)];
+  CHECK_FALSE(Segmentability::internal::test_segmentability(piece, &s.curvatures, strict, {},
+                                                            std::max(l, std::isnan(l_mds) ? 0. : l_mds))
+                .segmentable);
+  // and the options' own threshold decides first
+  CHECK(Segmentability::internal::test_segmentability(piece, &s.curvatures, Segmentability::Segmentability_options(),
+                                                      {}, 0.)
+          .test == Segmentability::Test::structure);
+}
+
 TEST_CASE("bending samples land on two different limbs of the star", "[automatic]")
 {
   const Shape& s = star();

@@ -27,6 +27,7 @@
 #include <memory>
 #include <queue>
 #include <string>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -45,8 +46,10 @@ namespace SpectralSeg {
 /// (`Segmentability::Projection_options`), so that noisy flat faces do not
 /// squeeze it into a needle; below the first cut of each connected
 /// component, no cut less salient than 0.5 (`min_cut_salience`), which
-/// stops the M test's cuts across a torso; no part under 2% of its
-/// component; at most 64 parts.
+/// stops the M test's cuts across a torso; the pieces of a piece that
+/// passed an L test pass with an L score above \f$\eta / 2\f$
+/// (`continuation_threshold`), so that a body keeps losing its limbs; no
+/// part under 2% of its component; at most 64 parts.
 /// \tparam SalienceModel a model of `Salience`
 template <typename SalienceModel = Salience::Thesis_salience>
 struct Automatic_segmentation_options
@@ -89,6 +92,14 @@ struct Automatic_segmentation_options
   /// Below the roots the test alone decides (the same rule there dices
   /// tables and chairs, doc/benchmarks.md).
   bool cut_unsegmentable_roots = true;
+  /// below a piece that passed an L test (L or L-MDS), its pieces pass
+  /// when an L contour scores above this lower threshold, should no test
+  /// pass at \f$\eta\f$ (our addition, a hysteresis on the structure
+  /// score; 0 or at least \f$\eta\f$: off, the thesis). Cutting a limb off a body
+  /// lowers the body's L score although its other limbs still stick out:
+  /// a teddy bear's body with an arm and two legs scores 0.085 against
+  /// \f$\eta = 0.1\f$. The default is \f$\eta / 2\f$.
+  double continuation_threshold = 0.05;
   /// how many pairs of sample faces are tried on each piece, the most
   /// salient of their cuts kept (`Segmentability::bending_sample_face_pairs()`;
   /// 1: the thesis's single pair)
@@ -137,6 +148,7 @@ struct Automatic_segmentation_options
     o.max_parts = 0;
     o.min_cut_salience = 0.;
     o.cut_unsegmentable_roots = false;
+    o.continuation_threshold = 0.;
     o.sequence = Sequence::distance_difference;
     return o;
   }
@@ -174,10 +186,11 @@ inline std::vector<double> sequence_weights(const Dual_graph& graph, const Execu
 ///
 /// Each connected component of the graph is a first piece. The largest
 /// piece still pending is taken (ties: smallest first face):
-/// 1. `Segmentability::test_segmentability()`: if no contour test passes,
-///    the piece is a final part (with `options.cut_unsegmentable_roots`, a
-///    connected component goes on and is cut only by a cut of at least
-///    `options.min_cut_salience`);
+/// 1. `Segmentability::test_segmentability()`: if no contour test passes
+///    (below a piece that passed an L test: nor an L contour scores above
+///    `options.continuation_threshold`), the piece is a final part (with
+///    `options.cut_unsegmentable_roots`, a connected component goes on and
+///    is cut only by a cut of at least `options.min_cut_salience`);
 /// 2. `Segmentability::bending_sample_faces()` picks two faces on different
 ///    parts (`options.sample_pairs` > 1: `bending_sample_face_pairs()`, each
 ///    pair through steps 2 and 3, the most salient cut kept),
@@ -310,8 +323,13 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
         return std::make_unique<Salient_cut::internal::Harmonic_system>(piece, options.sequence_angle_scale,
                                                                         face_order.restricted(piece.faces()));
       });
+    const std::size_t parent = h.nodes[i].parent;
+    const bool continued = parent != Part_node::none && options.continuation_threshold > 0. &&
+                           (h.nodes[parent].test == Segmentability::Test::structure ||
+                            h.nodes[parent].test == Segmentability::Test::structure_normalized);
     const Segmentability::Segmentability_result test = Segmentability::internal::test_segmentability(
-      piece, geometry ? &curvatures : nullptr, options.segmentability, vertex_order.restricted(piece.vertices()));
+      piece, geometry ? &curvatures : nullptr, options.segmentability, vertex_order.restricted(piece.vertices()),
+      continued ? options.continuation_threshold : std::numeric_limits<double>::infinity());
     lap("segmentability");
     {
       Part_node& node = h.nodes[i];

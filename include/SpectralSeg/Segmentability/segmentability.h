@@ -83,10 +83,14 @@ namespace internal {
 
 // test_segmentability() with the projections' sparse factorisations in the
 // elimination order `vertex_order` of the piece's vertices (empty: their
-// approximate minimum degree order)
+// approximate minimum degree order). When no test passes and an L contour
+// (L, then L-MDS) scores above `structure_fallback` (below the threshold;
+// not with `require_agreement`), that test passes after all (the scores
+// of every test run are kept).
 inline Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
                                                  const Segmentability_options& options,
-                                                 const SpectralSeg::internal::Elimination_permutation& vertex_order)
+                                                 const SpectralSeg::internal::Elimination_permutation& vertex_order,
+                                                 double structure_fallback = std::numeric_limits<double>::infinity())
 {
   Segmentability_result r;
   r.score = 0.;
@@ -94,6 +98,23 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
   const bool agreement = options.require_agreement && projections == 2;
   Segmentability_result first; // with agreement: the first family that passed
   bool chain = false;           // whether the piece's L spectrum is a chain's
+  const bool fallback = !agreement && structure_fallback < options.threshold;
+  Segmentability_result structure; // with `fallback`: the L family's projection and contours
+  const auto fall_back = [&]() {
+    for(Test t : {Test::structure, Test::structure_normalized})
+    {
+      const double s = structure.scores[static_cast<std::size_t>(t)];
+      if(s > structure_fallback)
+      {
+        structure.scores = r.scores;
+        structure.segmentable = true;
+        structure.test = t;
+        structure.score = s;
+        return structure;
+      }
+    }
+    return r;
+  };
   for(int p = 0; p < projections; ++p)
   {
     const Projection kind = p == 0 ? Projection::structure : Projection::geometry;
@@ -139,6 +160,8 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
         break;
       }
     }
+    if(fallback && p == 0)
+      structure = r;
     if(!agreement)
       continue;
     if(!passed)
@@ -166,7 +189,7 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
       return first;
     }
   }
-  return r;
+  return fallback ? fall_back() : r;
 }
 
 } // namespace internal
