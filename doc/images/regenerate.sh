@@ -75,5 +75,7 @@ if [ $quality = 1 ]; then
   $B/benchmark/bench_psb_quality "$S/psb-dev" --methods kway,contrast,auto,salient,sdf \
     --markdown doc/quality_table.md --png-dir "$OUT/quality" > "$TMP/quality.log"
   grep '^png:' "$TMP/quality.log"
+  # the same table at the top of doc/benchmarks.md
+  python3 doc/images/tools/sync_quality_table.py doc/quality_table.md doc/benchmarks.md
 fi
 echo "pictures written to $OUT"
