@@ -284,41 +284,23 @@ inline void run_boost_max_flow_backend(Graph_cut_backend backend, const Potts_pr
   run(problem, l);
 }
 
-} // namespace internal
-/// \endcond
-
-/// \ingroup PkgSpectralSegRefinement
-/// \brief Relabels the faces by minimising
-/// \f$E = \sum_f h_1(f, p_f) + \mu \sum_{(f,g)} h_2(f, g)\f$ with alpha expansion.
-///
-/// The data term of face \f$f\f$ for the segment with proxy \f$p\f$ is
-/// \f$h_1 = -\log\frac{1/d(f,p)}{\sum_q 1/d(f,q)}\f$, \f$d\f$ the Euclidean
-/// distance in the embedding between the face and the proxies (the K-means
-/// centroids). Across a pair of adjacent faces with different labels, the
-/// smoothness term is \f$h_2 = \frac{l(e)}{l_{max}}\left(1 -
-/// \frac{\log(\nu a(e) + 1)}{\log(\nu + 1)}\right)\f$, with \f$l(e)\f$ the
-/// shared edge length and \f$a(e)\f$ its angular weight: short boundaries
-/// along concave creases are cheap.
-///
-/// Expansion moves for every label are repeated until a whole sweep lowers
-/// the energy no more; a move is kept only when the energy of its labelling,
-/// evaluated exactly, is lower. Faces whose data term alone decides their
-/// label (`Graph_cut_options::fix_decided_faces`) are left out of the
-/// max-flow problems, which then only hold the faces near the boundaries.
-/// With `Graph_cut_options::band_width` positive, only the faces in a band
-/// along the boundaries may change label (our addition, the default of
-/// `segment_k_way()` through `Graph_cut_options::banded()`).
-/// Deterministic.
-///
-/// \param graph the dual graph
-/// \param embedding one row per face
-/// \param proxies one row per segment
-/// \param labels the labels to refine (in `[0, proxies.rows())`), replaced by the result
-/// \param options \f$\mu\f$, \f$\nu\f$ and the backend
-inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
-                                 const Eigen::MatrixXd& proxies, std::vector<int>& labels,
-                                 const Graph_cut_options& options = Graph_cut_options())
+// The max-flow problem of graph_cut_boundaries(): its variables (the faces
+// whose data term does not decide their label) and their Potts problem.
+// Made apart from the moves, so that a caller can release the embedding
+// (and this function its per-face scratch) before the moves run.
+struct Graph_cut_problem
 {
+  Potts_problem problem;
+  std::vector<Dual_graph::size_type> face_of_variable;
+};
+
+// graph_cut_boundaries() up to the moves: checks the input and makes the
+// problem (none when there are fewer than two proxies or no variable).
+inline Graph_cut_problem graph_cut_problem(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
+                                           const Eigen::MatrixXd& proxies, const std::vector<int>& labels,
+                                           const Graph_cut_options& options)
+{
+  Graph_cut_problem out;
   const std::size_t n = graph.number_of_faces();
   const std::size_t k = static_cast<std::size_t>(proxies.rows());
   if(labels.size() != n || static_cast<std::size_t>(embedding.rows()) != n)
@@ -326,7 +308,7 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   if(!(options.band_width >= 0.) || !std::isfinite(options.band_width))
     throw Invalid_input("graph cut: the band width must be finite and non-negative");
   if(k < 2)
-    return;
+    return out;
 
   // Smoothness term per dual edge, and its sum around each face.
   const Metrics::Angular_weight angular(options.convex_weight);
@@ -356,22 +338,22 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
   // is within the band's reach, so that an expansion move is a problem over
   // the faces near its label's segment, not over the whole band.
   std::vector<char> in_band(n, 1);
-  internal::Band_labels reach;
+  Band_labels reach;
   if(options.band_width > 0.)
   {
-    in_band = internal::boundary_band(graph, labels, options.band_width);
-    reach = internal::band_labels(graph, labels, in_band, options.band_width);
+    in_band = boundary_band(graph, labels, options.band_width);
+    reach = band_labels(graph, labels, in_band, options.band_width);
   }
   const double unreachable = std::numeric_limits<double>::infinity();
 
   // Data term of each face; the faces it does not decide become the
   // variables of the problem.
   const double scale = std::max(1e-300, (proxies.rowwise() - proxies.colwise().mean()).norm());
-  const std::size_t none = std::size_t(-1);
-  std::vector<std::size_t> variable(n, none);
-  internal::Potts_problem problem;
+  const Dual_graph::size_type none = Dual_graph::size_type(-1);
+  std::vector<Dual_graph::size_type> variable(n, none);
+  Potts_problem& problem = out.problem;
   problem.labels = k;
-  std::vector<std::size_t> face_of_variable;
+  std::vector<Dual_graph::size_type>& face_of_variable = out.face_of_variable;
   std::vector<double> face_cost(k), within_reach;
   const Eigen::Index dims = embedding.cols();
   if(proxies.cols() != dims)
@@ -438,12 +420,12 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
         decided = false;
     if(decided)
       continue;
-    variable[f] = face_of_variable.size();
-    face_of_variable.push_back(f);
+    variable[f] = Dual_graph::size_type(face_of_variable.size());
+    face_of_variable.push_back(Dual_graph::size_type(f));
     problem.add_vertex(face_cost);
   }
   if(problem.vertices == 0)
-    return;
+    return out;
 
   // Edges between two variables stay; an edge to a fixed face costs its
   // weight for every label but the fixed face's.
@@ -471,21 +453,70 @@ inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd&
     }
   }
 
+  return out;
+}
+
+// Runs the alpha expansion of `cut` (made by graph_cut_problem() for
+// `labels`) and writes its labels of the variables into `labels`.
+inline void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labels, const Graph_cut_options& options)
+{
+  const Potts_problem& problem = cut.problem;
+  if(problem.vertices == 0)
+    return;
   std::vector<std::size_t> l(problem.vertices);
   for(std::size_t v = 0; v < problem.vertices; ++v)
-    l[v] = std::size_t(labels[face_of_variable[v]]);
+    l[v] = std::size_t(labels[cut.face_of_variable[v]]);
   if(options.backend == Graph_cut_backend::maxflow)
   {
 #ifdef SPECTRALSEG_USE_MAXFLOW
-    internal::alpha_expansion<internal::Maxflow_impl>(problem, l);
+    alpha_expansion<Maxflow_impl>(problem, l);
 #else
     throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code from CGAL)");
 #endif
   }
   else
-    internal::run_boost_max_flow_backend(options.backend, problem, l);
+    run_boost_max_flow_backend(options.backend, problem, l);
   for(std::size_t v = 0; v < problem.vertices; ++v)
-    labels[face_of_variable[v]] = static_cast<int>(l[v]);
+    labels[cut.face_of_variable[v]] = static_cast<int>(l[v]);
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief Relabels the faces by minimising
+/// \f$E = \sum_f h_1(f, p_f) + \mu \sum_{(f,g)} h_2(f, g)\f$ with alpha expansion.
+///
+/// The data term of face \f$f\f$ for the segment with proxy \f$p\f$ is
+/// \f$h_1 = -\log\frac{1/d(f,p)}{\sum_q 1/d(f,q)}\f$, \f$d\f$ the Euclidean
+/// distance in the embedding between the face and the proxies (the K-means
+/// centroids). Across a pair of adjacent faces with different labels, the
+/// smoothness term is \f$h_2 = \frac{l(e)}{l_{max}}\left(1 -
+/// \frac{\log(\nu a(e) + 1)}{\log(\nu + 1)}\right)\f$, with \f$l(e)\f$ the
+/// shared edge length and \f$a(e)\f$ its angular weight: short boundaries
+/// along concave creases are cheap.
+///
+/// Expansion moves for every label are repeated until a whole sweep lowers
+/// the energy no more; a move is kept only when the energy of its labelling,
+/// evaluated exactly, is lower. Faces whose data term alone decides their
+/// label (`Graph_cut_options::fix_decided_faces`) are left out of the
+/// max-flow problems, which then only hold the faces near the boundaries.
+/// With `Graph_cut_options::band_width` positive, only the faces in a band
+/// along the boundaries may change label (our addition, the default of
+/// `segment_k_way()` through `Graph_cut_options::banded()`).
+/// Deterministic.
+///
+/// \param graph the dual graph
+/// \param embedding one row per face
+/// \param proxies one row per segment
+/// \param labels the labels to refine (in `[0, proxies.rows())`), replaced by the result
+/// \param options \f$\mu\f$, \f$\nu\f$ and the backend
+inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
+                                 const Eigen::MatrixXd& proxies, std::vector<int>& labels,
+                                 const Graph_cut_options& options = Graph_cut_options())
+{
+  // the problem's scratch (per face and per edge) is released before the moves
+  internal::solve_graph_cut(internal::graph_cut_problem(graph, embedding, proxies, labels, options), labels, options);
 }
 
 } // namespace Refinement
