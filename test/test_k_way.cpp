@@ -354,6 +354,49 @@ TEST_CASE("k-way labels do not depend on the number of threads", "[k_way][thread
   }
 }
 
+TEST_CASE("k-way without the embedding's coordinates in the result: the same labels", "[k_way][memory]")
+{
+  const Star& s = star();
+  for(Embedding::Method m : {Embedding::Method::exact, Embedding::Method::nystrom})
+  {
+    INFO("method " << int(m));
+    K_way_options light = with_method(m);
+    light.keep_embedding_coordinates = false;
+    for(unsigned threads : {1u, 2u})
+    {
+      // several candidates: each one's coordinates go before its moves
+      const K_way_result full = segment_k_way(s.weighted, 5, with_method(m), Execution(threads));
+      const K_way_result r = segment_k_way(s.weighted, 5, light, Execution(threads));
+      CHECK(r.labels == full.labels);
+      CHECK(r.normalized_cut == full.normalized_cut);
+      CHECK(r.extra_clusters == full.extra_clusters);
+      CHECK(r.embedding.samples == full.embedding.samples);
+      CHECK(r.hierarchy.nodes.size() == full.hierarchy.nodes.size());
+      CHECK(full.embedding.coordinates.rows() == Eigen::Index(s.graph.number_of_faces()));
+      CHECK(r.embedding.coordinates.size() == 0);
+    }
+    // one over-segmentation, and the automatic rule cut at a number of parts
+    // (its hierarchy's cut reads the coordinates)
+    K_way_options one = with_method(m);
+    one.alternative_extra_clusters.clear();
+    one.contrast_merge_clusters = 0;
+    K_way_options one_light = one;
+    one_light.keep_embedding_coordinates = false;
+    CHECK(segment_k_way(s.weighted, 5, one_light).labels == segment_k_way(s.weighted, 5, one).labels);
+    for(std::size_t parts : {0, 3})
+    {
+      K_way_automatic_options a;
+      a.k_way = with_method(m);
+      a.parts = parts;
+      K_way_automatic_options b = a;
+      b.k_way.keep_embedding_coordinates = false;
+      const K_way_result ra = segment_k_way_automatic(s.weighted, a), rb = segment_k_way_automatic(s.weighted, b);
+      CHECK(rb.labels == ra.labels);
+      CHECK(rb.embedding.coordinates.size() == 0);
+    }
+  }
+}
+
 TEST_CASE("k-way entry point on a mesh; every segment is connected; bad k", "[k_way][api]")
 {
   Star s;

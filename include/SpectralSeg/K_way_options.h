@@ -112,6 +112,18 @@ struct Basic_K_way_options
   /// that a part bounded by a crease all around (a shaft in a housing, a
   /// knob on a lid) is not shared with its neighbour; 0 turns it off
   double crease_angle = 30.;
+  /// whether the result keeps its embedding's coordinates
+  /// (`K_way_result::embedding`, one row per face, the largest array of the
+  /// result). Without them (our addition, for callers that only need the
+  /// labels, such as `spectralseg segment` and `k_way_segmentation()`),
+  /// `segment_k_way()` and `segment_k_way_automatic()` release each
+  /// over-segmentation's coordinates as soon as its graph cut has its data
+  /// terms, before the next one's embedding is made, instead of keeping
+  /// every candidate's until the best is known: 832,000 faces, 2 threads,
+  /// heap peak 927 -> 668 MB (doc/benchmarks.md). The labels are the same;
+  /// the result's `embedding.coordinates` is then empty (its samples,
+  /// kernel width and the other fields are kept).
+  bool keep_embedding_coordinates = true;
 
   /// the thesis's k-way method: K-means with exactly `k` clusters, the
   /// thesis's graph cut, no crease split
@@ -148,6 +160,7 @@ struct Basic_K_way_options
     o.merge_size_exponent = merge_size_exponent;
     o.merge_separation_scale = merge_separation_scale;
     o.crease_angle = crease_angle;
+    o.keep_embedding_coordinates = keep_embedding_coordinates;
     return o;
   }
 };

@@ -172,7 +172,9 @@ std::size_t k_way_segmentation(const TriangleMesh& tm, std::size_t k, SegmentMap
                                const NamedParameters& np = parameters::default_values())
 {
   const internal::Weighted_mesh_graph g(tm, np);
-  const K_way_result r = segment_k_way(g.weighted, k, internal::k_way_options_from(np), g.exec);
+  auto o = internal::k_way_options_from(np);
+  o.keep_embedding_coordinates = false; // only the labels are returned: less memory
+  const K_way_result r = segment_k_way(g.weighted, k, o, g.exec);
   internal::put_labels(tm, r.labels, segments, np);
   return r.number_of_segments;
 }
@@ -233,6 +235,7 @@ std::size_t k_way_segmentation_automatic(const TriangleMesh& tm, SegmentMap segm
   const auto k_way = internal::k_way_options_from(np);
   Basic_K_way_automatic_options<typename std::decay_t<decltype(k_way)>::Kernel_type> o;
   o.k_way = k_way;
+  o.k_way.keep_embedding_coordinates = false; // only the labels and the hierarchy are returned
   o.max_k = choose_parameter(get_parameter(np, SpectralSeg::internal_np::max_number_of_segments), o.max_k);
   o.min_boundary_contrast =
     choose_parameter(get_parameter(np, SpectralSeg::internal_np::min_boundary_contrast), o.min_boundary_contrast);

@@ -84,22 +84,49 @@ inline Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const st
   return proxies;
 }
 
-// The `m` merged segments of `r.labels` (at most `clusters`, else a graph
-// cut on that many labels would crawl, a mesh of many connected
-// components: then skipped) refined by the graph cut with their mean
-// embedding coordinates as proxies (when `options.boundary_enhancement`),
-// then made connected; with `lap`, the stages timed as "graph cut" (when it
-// ran) and "connected segments".
-template <typename AffinityKernel>
-void graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size_t clusters,
-                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, const Execution& exec,
-                      Stage_timer* lap = nullptr)
+// A graph cut made up to its moves: the problem, with the data terms read
+// from the embedding, so that the embedding can go before the moves run.
+struct Pending_cut
 {
+  /// whether there is a graph cut to run
+  bool run = false;
+  Refinement::internal::Graph_cut_problem problem;
+  /// refine_clusters(): the segments were merged down before the cut (else
+  /// they may be merged after it, which reads the embedding)
+  bool merged = false;
+};
+
+// graph_cut_merged() up to the graph cut's moves; with `release`,
+// `r.embedding.coordinates` are released then (nothing reads them after).
+template <typename AffinityKernel>
+Pending_cut prepare_graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size_t clusters,
+                                     const Basic_K_way_options<AffinityKernel>& options, K_way_result& r,
+                                     bool release)
+{
+  Pending_cut p;
   if(options.boundary_enhancement && m > 1 && m <= clusters)
   {
+    p.run = true;
+    p.problem = Refinement::internal::graph_cut_problem(graph.graph(), r.embedding.coordinates,
+                                                        mean_proxies(r.embedding.coordinates, r.labels, m), r.labels,
+                                                        options.graph_cut);
+  }
+  if(release)
+    r.embedding.coordinates.resize(0, 0);
+  return p;
+}
+
+// The rest of graph_cut_merged() after prepare_graph_cut_merged(): the
+// moves (`p` is emptied), then the segments made connected.
+template <typename AffinityKernel>
+void finish_graph_cut_merged(const Weighted_dual_graph& graph, const Basic_K_way_options<AffinityKernel>& options,
+                             K_way_result& r, Pending_cut& p, const Execution& exec, Stage_timer* lap)
+{
+  if(p.run)
+  {
     exec.report("graph cut", 0.);
-    Refinement::graph_cut_boundaries(graph.graph(), r.embedding.coordinates,
-                                     mean_proxies(r.embedding.coordinates, r.labels, m), r.labels, options.graph_cut);
+    Refinement::internal::solve_graph_cut(p.problem, r.labels, options.graph_cut);
+    p = Pending_cut();
     exec.report("graph cut", 1.);
     if(lap)
       (*lap)("graph cut");
@@ -107,6 +134,23 @@ void graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size
   r.number_of_segments = Refinement::make_segments_connected(graph.graph(), r.labels);
   if(lap)
     (*lap)("connected segments");
+}
+
+// The `m` merged segments of `r.labels` (at most `clusters`, else a graph
+// cut on that many labels would crawl, a mesh of many connected
+// components: then skipped) refined by the graph cut with their mean
+// embedding coordinates as proxies (when `options.boundary_enhancement`),
+// then made connected; with `lap`, the stages timed as "graph cut" (when it
+// ran) and "connected segments". With `release`, `r.embedding.coordinates`
+// are released as soon as nothing reads them any more (before the graph
+// cut's moves).
+template <typename AffinityKernel>
+void graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size_t clusters,
+                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, const Execution& exec,
+                      Stage_timer* lap = nullptr, bool release = false)
+{
+  Pending_cut p = prepare_graph_cut_merged(graph, m, clusters, options, r, release);
+  finish_graph_cut_merged(graph, options, r, p, exec, lap);
 }
 
 // The answer of a merge method cut at `parts` parts in its hierarchy
@@ -122,14 +166,42 @@ void cut_hierarchy(const Weighted_dual_graph& graph, std::size_t parts, std::siz
   graph_cut_merged(graph, m, clusters, options, r, exec);
 }
 
-// Merge (when over-segmented), graph cut and connected segments on the k
-// K-means clusters of kmeans_clusters(): k_final segments; the merges in
-// r.hierarchy (or, with `keep`, in `*keep`, for hierarchy_from_merges()
-// later: a candidate that loses never builds its hierarchy).
+// The weakest-boundary merge of refine_clusters() on `labels` (segments of
+// `r`'s embedding) down to `k_final`; the merges in r.hierarchy (or, with
+// `keep`, in `*keep`). Returns the number of segments left.
 template <typename AffinityKernel>
-void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
-                     const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
-                     const Execution& exec, Refinement::internal::Merge_history* keep = nullptr)
+std::size_t merge_weakest_segments(const Weighted_dual_graph& graph, std::size_t k_final,
+                                   const Basic_K_way_options<AffinityKernel>& options, K_way_result& r,
+                                   std::vector<int>& labels, Refinement::internal::Merge_history* keep)
+{
+  const std::vector<double> concave = Refinement::concave_angle_weights(graph.graph());
+  Refinement::Embedding_separation separation;
+  if(options.merge_separation_scale > 0.)
+  {
+    separation.coordinates = &r.embedding.coordinates;
+    separation.scale = options.merge_separation_scale;
+    separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
+  }
+  Refinement::internal::Merge_history history;
+  const std::size_t m =
+    Refinement::internal::merge_weakest(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
+                                        options.merge_min_area_fraction, options.merge_size_exponent, separation,
+                                        &history);
+  if(keep)
+    *keep = std::move(history);
+  else
+    r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+  return m;
+}
+
+// refine_clusters() up to its graph cut's moves: the merge (when
+// over-segmented) and the graph cut's problem; with `release`,
+// `r.embedding.coordinates` are released then when nothing reads them
+// after (the segments were merged down before the cut).
+template <typename AffinityKernel>
+Pending_cut prepare_refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
+                                    const Basic_K_way_options<AffinityKernel>& options, K_way_result& r,
+                                    Stage_timer& lap, Refinement::internal::Merge_history* keep, bool release)
 {
   const Eigen::MatrixXd& coordinates = r.embedding.coordinates;
   // Over-segmented: merge first, then cut the k merged segments with their
@@ -137,33 +209,8 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
   // segments can outnumber the clusters (each component is at least one),
   // and a graph cut on that many labels would crawl: there, cut the K-means
   // clusters first and merge afterwards.
-  std::vector<double> concave;
-  Refinement::Embedding_separation separation;
-  const auto merge = [&](std::vector<int>& labels) {
-    if(concave.empty())
-    {
-      concave = Refinement::concave_angle_weights(graph.graph());
-      if(options.merge_separation_scale > 0.)
-      {
-        separation.coordinates = &coordinates;
-        separation.scale = options.merge_separation_scale;
-        separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
-      }
-    }
-    Refinement::internal::Merge_history history;
-    const std::size_t m =
-      Refinement::internal::merge_weakest(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
-                                          options.merge_min_area_fraction, options.merge_size_exponent, separation,
-                                          &history);
-    if(keep)
-      *keep = std::move(history);
-    else
-      r.hierarchy =
-        hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
-    return m;
-  };
+  Pending_cut p;
   Eigen::MatrixXd proxies = r.clusters.centroids;
-  bool merged = false;
   if(k > k_final)
   {
     std::vector<int> labels = r.labels;
@@ -174,19 +221,40 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
         Refinement::split_along_regions(region, labels);
     }
     Refinement::make_segments_connected(graph.graph(), labels);
-    const std::size_t m = merge(labels);
+    const std::size_t m = merge_weakest_segments(graph, k_final, options, r, labels, keep);
     if(m <= k)
     {
       proxies = mean_proxies(coordinates, labels, m);
       r.labels = std::move(labels);
-      merged = true;
+      p.merged = true;
     }
     lap("merge");
   }
   if(options.boundary_enhancement)
   {
+    p.run = true;
+    p.problem = Refinement::internal::graph_cut_problem(graph.graph(), coordinates, proxies, r.labels, options.graph_cut);
+  }
+  if(release && p.merged)
+    r.embedding.coordinates.resize(0, 0);
+  return p;
+}
+
+// The rest of refine_clusters() after prepare_refine_clusters(): the graph
+// cut's moves (`p` is emptied), connected segments, and the merge when the
+// segments were not merged before.
+template <typename AffinityKernel>
+void finish_refine_clusters(const Weighted_dual_graph& graph, std::size_t k_final,
+                            const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Pending_cut& p,
+                            Stage_timer& lap, const Execution& exec, Refinement::internal::Merge_history* keep,
+                            bool release)
+{
+  const bool merged = p.merged;
+  if(p.run)
+  {
     exec.report("graph cut", 0.);
-    Refinement::graph_cut_boundaries(graph.graph(), coordinates, proxies, r.labels, options.graph_cut);
+    Refinement::internal::solve_graph_cut(p.problem, r.labels, options.graph_cut);
+    p = Pending_cut();
     exec.report("graph cut", 1.);
     lap("graph cut");
   }
@@ -194,9 +262,26 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
   lap("connected segments");
   if(!merged && r.number_of_segments > k_final)
   {
-    r.number_of_segments = merge(r.labels);
+    r.number_of_segments = merge_weakest_segments(graph, k_final, options, r, r.labels, keep);
     lap("merge");
   }
+  if(release)
+    r.embedding.coordinates.resize(0, 0);
+}
+
+// Merge (when over-segmented), graph cut and connected segments on the k
+// K-means clusters of kmeans_clusters(): k_final segments; the merges in
+// r.hierarchy (or, with `keep`, in `*keep`, for hierarchy_from_merges()
+// later: a candidate that loses never builds its hierarchy). With
+// `release`, `r.embedding.coordinates` are released as soon as nothing
+// reads them any more (before the graph cut's moves, or at the end).
+template <typename AffinityKernel>
+void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
+                     const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
+                     const Execution& exec, Refinement::internal::Merge_history* keep = nullptr, bool release = false)
+{
+  Pending_cut p = prepare_refine_clusters(graph, k, k_final, options, r, lap, keep, release);
+  finish_refine_clusters(graph, k_final, options, r, p, lap, exec, keep, release);
 }
 
 } // namespace internal
@@ -234,9 +319,16 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 /// `K_way_result::extra_clusters` and `K_way_result::contrast_merge` say
 /// which was kept. The Nyström
 /// farthest-point samples are nested, so the samples and distance rows of
-/// the largest count serve every candidate; with several threads the
-/// candidates' merges and graph cuts run side by side. The result does not
-/// depend on the number of threads.
+/// the largest count serve every candidate. Each candidate's embedding,
+/// K-means, merge and graph-cut data terms (the stages that read its
+/// embedding) run one candidate after the other; with several threads the
+/// candidates' graph-cut moves then run side by side. Without
+/// `options.keep_embedding_coordinates`, each candidate's embedding is
+/// released as soon as its data terms are made, so that one candidate's
+/// embedding is alive at a time (unless its merge comes after its graph
+/// cut, see below), and the result's
+/// `embedding.coordinates` is empty. The result does not depend on the
+/// number of threads, nor on `options.keep_embedding_coordinates`.
 ///
 /// On a mesh with more connected components than \f$m\f$ the merge cannot
 /// bring the segments down to \f$m\f$ labels; there the graph cut runs on
@@ -285,7 +377,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     r.embedding = internal::embed(graph, dimensions_of(options.extra_clusters), options.kernel, options.embedding, exec);
     lap("embedding");
     internal::kmeans_clusters(clusters_of(options.extra_clusters), options, r, lap, exec);
-    internal::refine_clusters(graph, clusters_of(options.extra_clusters), k, options, r, lap, exec);
+    internal::refine_clusters(graph, clusters_of(options.extra_clusters), k, options, r, lap, exec, nullptr,
+                              !options.keep_embedding_coordinates);
     r.extra_clusters = clusters_of(options.extra_clusters) - k;
     return r;
   }
@@ -311,6 +404,9 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   // their merges, made into a hierarchy for the kept candidate only
   std::vector<Refinement::internal::Merge_history> histories(specs.size());
   std::vector<std::vector<std::pair<std::string, double>>> times(specs.size());
+  // their graph cuts up to the moves
+  std::vector<internal::Pending_cut> cuts(specs.size());
+  const bool release = !options.keep_embedding_coordinates;
   const Embedding::Embedding_options& eo = options.embedding;
   // Nyström with farthest-point samples: the samples are nested, so the
   // samples and distance rows of the most clusters serve every candidate.
@@ -326,10 +422,11 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     shared = Embedding::internal::nystrom_rows(graph, largest + 1, options.kernel, eo, exec);
     lap("embedding");
   }
-  // The stages that use every thread (embedding, K-means) for one
-  // candidate after the other, then the mostly sequential ones (merge,
-  // max-flow) side by side: each thread takes the next candidate not yet
-  // taken, the threads shared between them; this thread takes the first
+  // The stages that read the embedding (embedding and K-means, which use
+  // every thread, the merge and the graph cut's data terms) for one
+  // candidate after the other, then the mostly sequential ones (max-flow
+  // moves, connected segments) side by side: each thread takes the next
+  // candidate not yet taken, the threads shared between them; this thread takes the first
   // (before the others start, so the progress callback is always reached)
   // and reports progress to `exec`, the others stop when it throws. A
   // candidate's result does not depend on where, or on how many threads, it
@@ -356,22 +453,31 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       c.embedding = internal::embed(graph, dimensions, options.kernel, eo, exec);
     t("embedding");
     internal::kmeans_clusters(specs[i].clusters, options, c, t, exec);
-  }
-  shared = Embedding::internal::Nystrom_rows(); // no longer needed
-  const auto refine = [&](std::size_t i, const Execution& x) {
-    internal::Stage_timer t(times[i], true);
-    K_way_result& c = candidates[i];
+    // the merge and the graph cut's data terms, the last to read the
+    // embedding: without coordinates in the result, it goes before the
+    // next candidate's is made
     if(specs[i].contrast)
     {
       // the contrast merge down to k segments: its hierarchy cut at k
       const std::size_t m = internal::merge_clusters_by_contrast(
         graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale, c, &histories[i]);
       t("merge");
-      internal::graph_cut_merged(graph, m, specs[i].clusters, options, c, x, &t);
+      cuts[i] = internal::prepare_graph_cut_merged(graph, m, specs[i].clusters, options, c, release);
       c.contrast_merge = true;
     }
     else
-      internal::refine_clusters(graph, specs[i].clusters, k, options, c, t, x, &histories[i]);
+      cuts[i] = internal::prepare_refine_clusters(graph, specs[i].clusters, k, options, c, t, &histories[i], release);
+    if(cuts[i].run)
+      t("graph cut");
+  }
+  shared = Embedding::internal::Nystrom_rows(); // no longer needed
+  const auto refine = [&](std::size_t i, const Execution& x) {
+    internal::Stage_timer t(times[i], true);
+    K_way_result& c = candidates[i];
+    if(specs[i].contrast)
+      internal::finish_graph_cut_merged(graph, options, c, cuts[i], x, &t);
+    else
+      internal::finish_refine_clusters(graph, k, options, c, cuts[i], t, x, &histories[i], release);
     c.extra_clusters = specs[i].clusters - k;
     c.normalized_cut = Refinement::concave_normalized_cut(graph.graph(), c.labels, options.cut_angle_scale);
     t("choice");
@@ -482,9 +588,13 @@ K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph,
     length += l;
   }
   o.merge_strength_limit = options.min_boundary_contrast * (length > 0. ? sum / length : 0.);
+  if(options.parts > 0)
+    o.keep_embedding_coordinates = true; // the hierarchy's cut reads them
   K_way_result r = segment_k_way(graph, 2, o, exec);
   if(options.parts > 0 && !r.hierarchy.nodes.empty())
     internal::cut_hierarchy(graph, options.parts, std::min(options.max_k, n - 1), o, r, exec);
+  if(!options.k_way.keep_embedding_coordinates)
+    r.embedding.coordinates.resize(0, 0);
   return r;
 }
 

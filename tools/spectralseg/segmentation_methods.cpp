@@ -220,6 +220,7 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
   options.crease_angle = o.crease_angle;
   options.merge_size_exponent = o.merge_size_exponent;
   options.merge_separation_scale = o.merge_separation;
+  options.keep_embedding_coordinates = false; // the tool reports the samples and width only: less memory
   if(o.graph_cut_backend == "maxflow")
     options.graph_cut.backend = SpectralSeg::Refinement::Graph_cut_backend::maxflow;
   else if(o.graph_cut_backend == "boost-csr")
