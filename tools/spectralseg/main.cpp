@@ -25,7 +25,6 @@
 #include <iostream>
 #include <new>
 #include <string>
-#include <thread>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -107,9 +106,13 @@ int main(int argc, char** argv)
   // Kept memory stays in the heap of the thread that freed it, and glibc
   // gives up to eight heaps per core to the threads: the worker threads of
   // the metric, the embedding and the candidates' graph cuts each kept
-  // their high-water mark (doc/benchmarks.md). One heap per core lets a
-  // thread reuse what another freed.
-  mallopt(M_ARENA_MAX, int(std::max(1u, std::thread::hardware_concurrency())));
+  // their high-water mark (doc/benchmarks.md). One heap for every thread
+  // lets a thread reuse what another freed: the candidates' graph cuts in
+  // a second thread reuse the embeddings freed in the first (armadillo
+  // 832,000 faces: a resident peak 3-13 MB lower than with one heap per
+  // core, and less dependent on which thread takes which candidate;
+  // doc/benchmarks.md).
+  mallopt(M_ARENA_MAX, 1);
 #endif
   CLI::App app{"spectralseg: part-aware spectral segmentation of triangle meshes"};
   app.require_subcommand(1);
