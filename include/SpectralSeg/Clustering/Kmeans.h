@@ -192,14 +192,25 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
     }
     // the sums of fixed blocks of points in parallel, each in point order,
     // then the blocks' sums in block order: the same sums whatever the
-    // number of threads (one block below `block` points: point order)
+    // number of threads (one block below `block` points: point order). A
+    // block none of whose points changed cluster keeps its sums of the
+    // round before, which are the ones it would make again.
     const std::size_t blocks = (n + block - 1) / block;
-    block_sum.assign(blocks * kk * dims, 0.);
-    block_count.assign(blocks * kk, 0);
+    if(block_sum.empty())
+    {
+      block_sum.assign(blocks * kk * dims, 0.);
+      block_count.assign(blocks * kk, 0);
+    }
     ::SpectralSeg::internal::parallel_range(0, blocks, exec.threads(), [&](std::size_t b) {
+      const std::size_t end = std::min(n, (b + 1) * block);
+      if(std::find(changed.begin() + std::ptrdiff_t(b * block), changed.begin() + std::ptrdiff_t(end), char(1)) ==
+         changed.begin() + std::ptrdiff_t(end))
+        return;
       double* s = block_sum.data() + b * kk * dims;
       std::size_t* m = block_count.data() + b * kk;
-      for(std::size_t i = b * block; i < std::min(n, (b + 1) * block); ++i)
+      std::fill(s, s + kk * dims, 0.);
+      std::fill(m, m + kk, std::size_t(0));
+      for(std::size_t i = b * block; i < end; ++i)
       {
         const std::size_t c = std::size_t(r.labels[i]);
         for(std::size_t j = 0; j < dims; ++j)
