@@ -175,22 +175,11 @@ std::size_t merge_weakest_segments(const Weighted_dual_graph& graph, std::size_t
                                    std::vector<int>& labels, Refinement::internal::Merge_history* keep)
 {
   const std::vector<double> concave = Refinement::concave_angle_weights(graph.graph());
-  Refinement::Embedding_separation separation;
-  if(options.merge_separation_scale > 0.)
-  {
-    separation.coordinates = &r.embedding.coordinates;
-    separation.scale = options.merge_separation_scale;
-    separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
-  }
   Refinement::internal::Merge_history history;
-  const std::size_t m =
-    Refinement::internal::merge_weakest(graph.graph(), concave, labels, k_final, options.merge_strength_limit,
-                                        options.merge_min_area_fraction, options.merge_size_exponent, separation,
-                                        &history);
-  if(keep)
-    *keep = std::move(history);
-  else
-    r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+  const std::size_t m = Refinement::internal::merge_weakest(
+    graph.graph(), concave, labels, k_final, options.merge_strength_limit, options.merge_min_area_fraction,
+    options.merge_size_exponent, merge_separation(graph, options, r.embedding.coordinates), &history);
+  keep_merges(graph, std::move(history), r, keep);
   return m;
 }
 

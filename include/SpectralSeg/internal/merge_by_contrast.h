@@ -93,6 +93,35 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
     history);
 }
 
+// The embedding-separation factor of a merge on `coordinates` with
+// `k_way`'s scale (none when the scale is 0), its exponent from the mesh's
+// sharp-crease share.
+template <typename AffinityKernel>
+Refinement::Embedding_separation merge_separation(const Weighted_dual_graph& graph,
+                                                  const Basic_K_way_options<AffinityKernel>& k_way,
+                                                  const Eigen::MatrixXd& coordinates)
+{
+  Refinement::Embedding_separation separation;
+  if(k_way.merge_separation_scale > 0.)
+  {
+    separation.coordinates = &coordinates;
+    separation.scale = k_way.merge_separation_scale;
+    separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
+  }
+  return separation;
+}
+
+// A merge's history into `*keep` (for hierarchy_from_merges() later), or
+// without `keep` made into `r.hierarchy` now.
+inline void keep_merges(const Weighted_dual_graph& graph, Refinement::internal::Merge_history&& history,
+                        K_way_result& r, Refinement::internal::Merge_history* keep)
+{
+  if(keep)
+    *keep = std::move(history);
+  else
+    r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+}
+
 // The contrast merge of segment_hybrid() on `r.labels`, the K-means
 // clusters of `r.embedding`: the clusters split along closed loops of
 // concave creases (`k_way.crease_angle`), made connected and merged by
@@ -115,20 +144,11 @@ std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
       Refinement::split_along_regions(region, r.labels);
   }
   Refinement::make_segments_connected(graph.graph(), r.labels);
-  Refinement::Embedding_separation separation;
-  if(k_way.merge_separation_scale > 0.)
-  {
-    separation.coordinates = &r.embedding.coordinates;
-    separation.scale = k_way.merge_separation_scale;
-    separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
-  }
   Refinement::internal::Merge_history history;
-  const std::size_t m = merge_by_contrast(graph.graph(), graph.weights(), r.labels, min_segments, limit,
-                                          k_way.merge_min_area_fraction, separation, neck_scale, &history);
-  if(keep)
-    *keep = std::move(history);
-  else
-    r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
+  const std::size_t m =
+    merge_by_contrast(graph.graph(), graph.weights(), r.labels, min_segments, limit, k_way.merge_min_area_fraction,
+                      merge_separation(graph, k_way, r.embedding.coordinates), neck_scale, &history);
+  keep_merges(graph, std::move(history), r, keep);
   return m;
 }
 
