@@ -24,10 +24,10 @@
 #include <SpectralSeg/segment_hybrid.h>
 
 #include <future>
+#include <limits>
 #include <memory>
 #include <queue>
 #include <string>
-#include <limits>
 #include <utility>
 #include <vector>
 

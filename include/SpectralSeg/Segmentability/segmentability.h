@@ -101,6 +101,8 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
   const bool fallback = !agreement && structure_fallback < options.threshold;
   Segmentability_result structure; // with `fallback`: the L family's projection and contours
   const auto fall_back = [&]() {
+    if(structure.projection.points.empty())
+      return r; // no L contour above the fallback threshold
     for(Test t : {Test::structure, Test::structure_normalized})
     {
       const double s = structure.scores[static_cast<std::size_t>(t)];
@@ -160,8 +162,12 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
         break;
       }
     }
-    if(fallback && p == 0)
-      structure = r;
+    // the L family's projection and contours, when they can pass after all
+    // (moved: the M family writes its own)
+    if(fallback && p == 0 &&
+       (r.scores[static_cast<std::size_t>(Test::structure)] > structure_fallback ||
+        r.scores[static_cast<std::size_t>(Test::structure_normalized)] > structure_fallback))
+      structure = std::move(r);
     if(!agreement)
       continue;
     if(!passed)
