@@ -739,6 +739,47 @@ TEST_CASE("contrast merge: the neck ratio keeps the compact part and merges the 
   }
 }
 
+TEST_CASE("concave angles at a reference resolution: a finer copy of the star keeps its limbs' contrast",
+          "[hybrid][merge]")
+{
+  // the concave contrast of the limbs' creases (their mean concave angle
+  // over the mesh's, by edge length) on the star and on the same surface
+  // with 16 times the faces
+  const auto contrast = [](const Dual_graph& g, const std::vector<double>& w, const std::vector<int>& part) {
+    double all = 0., length = 0., along = 0., along_length = 0.;
+    for(std::size_t d = 0; d < w.size(); ++d)
+    {
+      const Dual_graph::Edge& e = g.edge(Dual_graph::size_type(d));
+      all += e.length * w[d];
+      length += e.length;
+      if(part[e.face[0]] != part[e.face[1]])
+      {
+        along += e.length * w[d];
+        along_length += e.length;
+      }
+    }
+    return (along / along_length) / (all / length);
+  };
+  const test_meshes::Soup coarse_soup = test_meshes::star(1), fine_soup = test_meshes::star(4);
+  const Dual_graph coarse = make_dual_graph(test_meshes::to_mesh<Mesh>(coarse_soup));
+  const Dual_graph fine = make_dual_graph(test_meshes::to_mesh<Mesh>(fine_soup));
+  REQUIRE(fine.number_of_faces() == 16 * coarse.number_of_faces());
+  const std::size_t reference = coarse.number_of_faces();
+  // up to the reference, the mesh's own angles, exactly
+  CHECK(Refinement::concave_angle_weights(coarse, reference) == Refinement::concave_angle_weights(coarse));
+  CHECK(Refinement::concave_angle_weights(fine, 0) == Refinement::concave_angle_weights(fine));
+  const double at_coarse = contrast(coarse, Refinement::concave_angle_weights(coarse), coarse_soup.face_part);
+  // at its own resolution the sharp creases' contrast grows with the faces
+  const double own = contrast(fine, Refinement::concave_angle_weights(fine), fine_soup.face_part);
+  CHECK(own > 3. * at_coarse);
+  // at the reference resolution it stays about the coarse mesh's
+  const double at_reference =
+    contrast(fine, Refinement::concave_angle_weights(fine, reference), fine_soup.face_part);
+  INFO("coarse " << at_coarse << " fine " << own << " fine at the reference " << at_reference);
+  CHECK(at_reference > 0.5 * at_coarse);
+  CHECK(at_reference < 1.25 * at_coarse);
+}
+
 TEST_CASE("contrast merge: the clusters are split along closed concave creases first", "[hybrid][creases]")
 {
   // two K-means clusters cannot hold the star's five parts; split along the

@@ -72,6 +72,17 @@ struct Basic_hybrid_options
   /// multiplied by \f$(o/\ell)^2\f$. Neither ratio depends on the mesh's
   /// scale or resolution. At least 0
   double neck_scale = internal::default_neck_scale;
+  /// the resolution at which the concave contrast is measured (default
+  /// 50,000 faces; 0: every mesh at its own, the contrast merge until
+  /// 2026-11-27): on a mesh with more faces, the concave angles are those
+  /// of `Refinement::concave_angle_weights(graph, reference_faces)`, judged
+  /// on face normals averaged over about the face spacing of a mesh of this
+  /// many faces. On a finer copy of a surface a smooth fold turns by smaller
+  /// angles across each edge while a sharp crease keeps its angle, so
+  /// without it the same shape is cut into more parts the finer its mesh
+  /// (doc/benchmarks.md). Meshes with at most this many faces are not
+  /// affected
+  std::size_t reference_faces = internal::default_reference_faces;
   /// when positive, the answer has this many parts (or as many as the
   /// over-segmentation has, if fewer): the merge hierarchy
   /// (`K_way_result::hierarchy`) cut at that number instead of where
@@ -120,7 +131,10 @@ typedef Basic_hybrid_options<Kernels::Exponential_kernel> Hybrid_options;
 ///    both say it separates parts, so K-means' cuts through smooth bodies and
 ///    through creased but uniform regions are both undone. The ratios are
 ///    relative to the mesh or free of units, so the limit does not depend
-///    on resolution or scale;
+///    on scale; on meshes of more than `options.reference_faces` faces the
+///    concave angles are measured at that resolution
+///    (`Refinement::concave_angle_weights()`), so that a finer copy of a
+///    shape is not cut into more parts;
 /// 4. graph-cut boundary enhancement on the merged segments, their mean
 ///    embedding as proxies (optional, `options.k_way.boundary_enhancement`;
 ///    skipped when connected components leave more segments than clusters),
@@ -183,8 +197,9 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   exec.report("k-means", 1.);
   lap("k-means");
   r.labels = r.clusters.labels;
-  std::size_t m = internal::merge_clusters_by_contrast(graph, options.k_way, options.min_segments,
-                                                       options.min_boundary_contrast, options.neck_scale, r);
+  std::size_t m =
+    internal::merge_clusters_by_contrast(graph, options.k_way, options.min_segments, options.min_boundary_contrast,
+                                         options.neck_scale, options.reference_faces, r);
   if(options.parts > 0)
   {
     r.labels = r.hierarchy.labels_with_parts(options.parts);

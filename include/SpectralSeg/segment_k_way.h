@@ -449,7 +449,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     {
       // the contrast merge down to k segments: its hierarchy cut at k
       const std::size_t m = internal::merge_clusters_by_contrast(
-        graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale, c, &histories[i]);
+        graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale,
+        internal::default_reference_faces, c, &histories[i]);
       t("merge");
       cuts[i] = internal::prepare_graph_cut_merged(graph, m, specs[i].clusters, options, c, release);
       c.contrast_merge = true;

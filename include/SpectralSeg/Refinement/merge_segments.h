@@ -125,11 +125,14 @@ struct Merge_history
 // returns the number of segments. With `history`, the merges go on past the
 // answer, in the same order without the limit and the count, down to one
 // segment per connected set, and every merge is recorded there.
+// Segment_boundary::concave sums `concave_angles` (one per dual edge) when
+// given, else each edge's concave dihedral angle (concave_angle_weights()).
 template <typename Cost>
 std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                       std::vector<int>& labels, std::size_t min_segments, double min_area_fraction,
                                       double limit, const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr,
-                                      Merge_history* history = nullptr)
+                                      Merge_history* history = nullptr,
+                                      const std::vector<double>* concave_angles = nullptr)
 {
   const std::size_t n = graph.number_of_faces();
   // dense labels 0 .. s-1 in order of first face
@@ -155,7 +158,7 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
     for(Segment_boundary* x : {&boundary[a][b], &boundary[b][a]})
     {
       x->length += e.length;
-      x->concave += e.concave ? e.length * e.normal_angle : 0.;
+      x->concave += concave_angles ? e.length * (*concave_angles)[d] : e.concave ? e.length * e.normal_angle : 0.;
       x->weight += weights.empty() ? 0. : e.length * weights[d];
     }
   }
@@ -371,6 +374,65 @@ inline std::vector<double> concave_angle_weights(const Dual_graph& graph)
   {
     const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
     w[d] = e.concave ? e.normal_angle : 0.;
+  }
+  return w;
+}
+
+/// \ingroup PkgSpectralSegRefinement
+/// \brief `concave_angle_weights()` as they would be measured on the same
+/// surface tessellated with at most `reference_faces` faces (our addition).
+///
+/// On a finer mesh a smooth fold turns by smaller angles across each of its
+/// shorter edges, while a sharp crease keeps its angle: ratios of concave
+/// angles (such as the concave contrast of `segment_hybrid()`) then depend on
+/// the resolution. Here, on a mesh of \f$F\f$ faces with \f$F\f$ above
+/// `reference_faces`, each face's area-weighted normal is first averaged
+/// with its neighbours' \f$s = \mathrm{round}((F / F_{ref} - 1) / 0.75)\f$
+/// times (each step: the face and its up to three neighbours, equally), so
+/// that the average spreads over about the face spacing of a mesh of
+/// \f$F_{ref}\f$ faces; the fold of each dual edge (concave or not, and
+/// its angle) is then judged with the averaged normals. A mesh with at most
+/// `reference_faces` faces, or `reference_faces` 0, gets
+/// `concave_angle_weights()` exactly. The averaging stays within connected
+/// components, does not depend on the face order beyond the rounding of
+/// sums, and costs \f$s\f$ passes over the faces.
+inline std::vector<double> concave_angle_weights(const Dual_graph& graph, std::size_t reference_faces)
+{
+  const std::size_t n = graph.number_of_faces();
+  if(reference_faces == 0 || n <= reference_faces)
+    return concave_angle_weights(graph);
+  const std::size_t steps =
+    static_cast<std::size_t>(std::lround((double(n) / double(reference_faces) - 1.) / 0.75));
+  if(steps == 0)
+    return concave_angle_weights(graph);
+  const Mesh_geometry& geo = graph.geometry();
+  std::vector<Eigen::Vector3d> normal(n), next(n);
+  for(std::size_t f = 0; f < n; ++f)
+    normal[f] = geo.areas[f] * geo.normals[f];
+  for(std::size_t step = 0; step < steps; ++step)
+  {
+    for(std::size_t f = 0; f < n; ++f)
+    {
+      Eigen::Vector3d sum = normal[f];
+      graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f),
+                               [&](Dual_graph::size_type g, Dual_graph::size_type) { sum += normal[g]; });
+      next[f] = 0.25 * sum;
+    }
+    normal.swap(next);
+  }
+  std::vector<double> w(graph.number_of_edges(), 0.);
+  for(std::size_t d = 0; d < w.size(); ++d)
+  {
+    const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
+    const double l0 = normal[e.face[0]].norm(), l1 = normal[e.face[1]].norm();
+    if(!(l0 > 0.) || !(l1 > 0.) || !std::isfinite(l0) || !std::isfinite(l1))
+      continue;
+    const Eigen::Vector3d n0 = normal[e.face[0]] / l0, n1 = normal[e.face[1]] / l1;
+    const Eigen::Vector3d& c0 = geo.centroids[e.face[0]];
+    const Eigen::Vector3d& c1 = geo.centroids[e.face[1]];
+    // concave as in Dual_graph: each face rises above the other's tangent plane
+    if((n0 - n1).dot(c1 - c0) > 1e-12 * (c1 - c0).norm())
+      w[d] = std::acos(std::max(-1., std::min(1., n0.dot(n1))));
   }
   return w;
 }

@@ -29,6 +29,10 @@ namespace internal {
 // The neck ratio's scale of the contrast merge (Basic_hybrid_options::neck_scale).
 constexpr double default_neck_scale = 0.4;
 
+// The reference resolution of the contrast merge's concave contrast
+// (Basic_hybrid_options::reference_faces).
+constexpr std::size_t default_reference_faces = 50000;
+
 // The exponent of the merge's embedding-separation factor for a mesh whose
 // sharp_crease_share() is `share` (see K_way_options::merge_separation_scale):
 // 1 up to 0.3, 0 from 0.6, linear in between.
@@ -49,19 +53,24 @@ inline double separation_exponent(double share)
 // contrast alone). Labels renumbered by their smallest face; returns the
 // number of segments; with `history`, every merge down to one segment per
 // component is recorded there (Refinement::internal::merge_cheapest_boundaries()).
+// The concave angles are those of Refinement::concave_angle_weights() at
+// `reference_faces` (0: the mesh's own resolution).
 inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
                                      std::vector<int>& labels, std::size_t min_segments, double limit,
                                      double min_area_fraction,
                                      const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
-                                     double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr)
+                                     double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr,
+                                     std::size_t reference_faces = 0)
 {
+  // the concave angles at the reference resolution (the mesh's own up to it)
+  const std::vector<double> angles = Refinement::concave_angle_weights(graph, reference_faces);
   // mesh means, weighted by edge length
   double length = 0., concave = 0., metric = 0.;
   for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
   {
     const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
     length += e.length;
-    concave += e.concave ? e.length * e.normal_angle : 0.;
+    concave += e.length * angles[d];
     metric += e.length * weights[d];
   }
   const double mean_concave = length > 0. ? concave / length : 0.;
@@ -90,7 +99,7 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
     },
     separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0 ? separation.coordinates
                                                                                             : nullptr,
-    history);
+    history, &angles);
 }
 
 // The embedding-separation factor of a merge on `coordinates` with
@@ -129,13 +138,14 @@ inline void keep_merges(const Weighted_dual_graph& graph, Refinement::internal::
 // separation scale); every merge down to one segment per component goes
 // into `r.hierarchy` (or, with `keep`, into `*keep`, for
 // hierarchy_from_merges() later), whose answer is where `limit` or
-// `min_segments` stops the merge, as are `r.labels`. Returns the number of
-// segments there.
+// `min_segments` stops the merge, as are `r.labels`; its concave contrast
+// measured at `reference_faces` (see merge_by_contrast()). Returns the
+// number of segments there.
 template <typename AffinityKernel>
 std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
                                        const Basic_K_way_options<AffinityKernel>& k_way, std::size_t min_segments,
-                                       double limit, double neck_scale, K_way_result& r,
-                                       Refinement::internal::Merge_history* keep = nullptr)
+                                       double limit, double neck_scale, std::size_t reference_faces,
+                                       K_way_result& r, Refinement::internal::Merge_history* keep = nullptr)
 {
   if(k_way.crease_angle > 0.)
   {
@@ -147,7 +157,8 @@ std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
   Refinement::internal::Merge_history history;
   const std::size_t m =
     merge_by_contrast(graph.graph(), graph.weights(), r.labels, min_segments, limit, k_way.merge_min_area_fraction,
-                      merge_separation(graph, k_way, r.embedding.coordinates), neck_scale, &history);
+                      merge_separation(graph, k_way, r.embedding.coordinates), neck_scale, &history,
+                      reference_faces);
   keep_merges(graph, std::move(history), r, keep);
   return m;
 }
