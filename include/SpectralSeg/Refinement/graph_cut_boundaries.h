@@ -260,16 +260,22 @@ inline Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& 
     touched.clear();
     begin = end;
   }
-  std::sort(pairs.begin(), pairs.end());
+  // The pairs come label after label, ascending, each face at most once per
+  // label: a stable counting sort by face puts them in (face, label) order,
+  // as sorting them would, in linear time (the sort took 1% of a 832,000
+  // face segmentation).
   Band_labels out;
   out.offset.assign(n + 1, 0);
   for(const auto& p : pairs)
     ++out.offset[p.first + 1];
   for(std::size_t f = 0; f < n; ++f)
     out.offset[f + 1] += out.offset[f];
-  out.reachable.reserve(pairs.size());
-  for(const auto& p : pairs)
-    out.reachable.push_back(p.second);
+  out.reachable.resize(pairs.size());
+  for(const auto& p : pairs) // offset[f] walks to offset[f + 1] ...
+    out.reachable[out.offset[p.first]++] = p.second;
+  for(std::size_t f = n; f > 0; --f) // ... and is moved back
+    out.offset[f] = out.offset[f - 1];
+  out.offset[0] = 0;
   return out;
 }
 
