@@ -24,69 +24,100 @@ namespace Refinement {
 /// islands first, until no island is left. A region with no neighbour (a
 /// whole connected component of the mesh) becomes a segment of its own, so
 /// a mesh with several components gets at least one segment per component.
+///
+/// The regions are found once; after each merge only the merged region is
+/// flooded again (from its smallest face, in the order a flood of the whole
+/// mesh would visit it, so that its area is summed in the same order), not
+/// the whole mesh: the answer is that of finding every region again after
+/// each merge, in time proportional to the merged regions.
 inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<int>& labels)
 {
+  typedef Dual_graph::size_type Face;
   const std::size_t n = graph.number_of_faces();
   const auto& areas = graph.geometry().areas;
+  // Regions are numbered by their smallest face, as a flood of the whole
+  // mesh in face order numbers them; a merged region takes the smallest
+  // number of its parts, which keeps that order.
+  std::vector<int> region(n, -1);
+  std::vector<Face> region_seed;
+  std::vector<double> region_area;
+  std::vector<int> region_label;
+  std::vector<char> alive;
+  // the faces of the region of `seed`, in the order of the flood of the
+  // whole mesh (depth first, from its smallest face), marked as region `r`;
+  // returns its area summed in that order
+  std::vector<Face> faces, stack;
+  std::vector<std::size_t> visit(n, 0);
+  std::size_t floods = 0;
+  const auto flood = [&](Face seed, int r) {
+    ++floods;
+    faces.clear();
+    double area = 0.;
+    visit[seed] = floods;
+    region[seed] = r;
+    stack.push_back(seed);
+    while(!stack.empty())
+    {
+      const Face f = stack.back();
+      stack.pop_back();
+      area += areas[f];
+      faces.push_back(f);
+      graph.for_each_neighbour(f, [&](Face g, Face) {
+        if(visit[g] != floods && labels[g] == labels[f])
+        {
+          visit[g] = floods;
+          region[g] = r;
+          stack.push_back(g);
+        }
+      });
+    }
+    return area;
+  };
+  for(std::size_t s = 0; s < n; ++s)
+    if(region[s] < 0)
+    {
+      const int r = static_cast<int>(region_seed.size());
+      region_seed.push_back(static_cast<Face>(s));
+      region_label.push_back(labels[s]);
+      alive.push_back(1);
+      region_area.push_back(flood(static_cast<Face>(s), r));
+    }
+  int fresh = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end()) + 1;
+  std::vector<int> islands, touching;
   for(bool merged = true; merged;)
   {
     merged = false;
-    // connected regions of equal labels
-    std::vector<int> region(n, -1);
-    std::vector<double> region_area;
-    std::vector<int> region_label;
-    std::vector<std::vector<Dual_graph::size_type>> region_faces;
-    std::vector<Dual_graph::size_type> stack;
-    for(std::size_t s = 0; s < n; ++s)
-    {
-      if(region[s] >= 0)
-        continue;
-      const int r = static_cast<int>(region_area.size());
-      region_area.push_back(0.);
-      region_label.push_back(labels[s]);
-      region_faces.emplace_back();
-      region[s] = r;
-      stack.push_back(static_cast<Dual_graph::size_type>(s));
-      while(!stack.empty())
-      {
-        const auto f = stack.back();
-        stack.pop_back();
-        region_area[std::size_t(r)] += areas[f];
-        region_faces[std::size_t(r)].push_back(f);
-        graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type) {
-          if(region[g] < 0 && labels[g] == labels[f])
-          {
-            region[g] = r;
-            stack.push_back(g);
-          }
-        });
-      }
-    }
-    // the largest region of each label keeps it
+    // the largest region of each label keeps it (the first on ties)
     std::map<int, int> main_region;
     for(std::size_t r = 0; r < region_area.size(); ++r)
     {
+      if(!alive[r])
+        continue;
       auto it = main_region.find(region_label[r]);
       if(it == main_region.end() || region_area[r] > region_area[std::size_t(it->second)])
         main_region[region_label[r]] = int(r);
     }
     // islands, smallest first; merge the smallest one that has a neighbour
-    std::vector<int> islands;
+    islands.clear();
     for(std::size_t r = 0; r < region_area.size(); ++r)
-      if(main_region[region_label[r]] != int(r))
+      if(alive[r] && main_region[region_label[r]] != int(r))
         islands.push_back(int(r));
     std::sort(islands.begin(), islands.end(), [&](int a, int b) {
       return region_area[std::size_t(a)] < region_area[std::size_t(b)] ||
              (region_area[std::size_t(a)] == region_area[std::size_t(b)] && a < b);
     });
-    int fresh = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end()) + 1;
     for(int isl : islands)
     {
+      flood(region_seed[std::size_t(isl)], isl); // its faces in flood order
       std::map<int, double> boundary; // neighbouring label -> shared edge length
-      for(const Dual_graph::size_type f : region_faces[std::size_t(isl)])
-        graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type e) {
+      touching.clear();
+      for(const Face f : faces)
+        graph.for_each_neighbour(f, [&](Face g, Face e) {
           if(region[g] != isl)
+          {
             boundary[labels[g]] += graph.edge(e).length;
+            touching.push_back(region[g]);
+          }
         });
       int target = fresh;
       double longest = -1.;
@@ -99,12 +130,25 @@ inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<
       const bool isolated = target == fresh;
       if(isolated)
         ++fresh; // an isolated component: its own segment
-      for(const Dual_graph::size_type f : region_faces[std::size_t(isl)])
+      for(const Face f : faces)
         labels[f] = target;
+      region_label[std::size_t(isl)] = target;
       if(isolated)
         continue; // nothing else sees it: no need to recompute the regions
+      // the island and the regions of the target label it touches are one
+      // region now, numbered and flooded from the smallest of them
+      int first = isl;
+      for(const int r : touching)
+        if(region_label[std::size_t(r)] == target)
+          first = std::min(first, r);
+      for(const int r : touching)
+        if(region_label[std::size_t(r)] == target)
+          alive[std::size_t(r)] = 0;
+      alive[std::size_t(isl)] = 0;
+      alive[std::size_t(first)] = 1;
+      region_area[std::size_t(first)] = flood(region_seed[std::size_t(first)], first);
       merged = true;
-      break; // regions changed: recompute
+      break; // regions changed: recompute the main regions and islands
     }
   }
   // renumber by smallest face
