@@ -21,6 +21,34 @@
 
 namespace SpectralSeg {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The fold between two faces with unit normals n0, n1 and centroids c0, c1:
+// the angle between the normals (0 when either normal is undefined, that is
+// not of unit length) and whether the fold is concave, each face rising
+// above the other's tangent plane: (n0 - n1).(c1 - c0) > 0, with a
+// tolerance that keeps flat pairs convex.
+struct Fold
+{
+  double angle = 0.;
+  bool concave = false;
+};
+
+inline Fold fold_between(const Eigen::Vector3d& n0, const Eigen::Vector3d& n1, const Eigen::Vector3d& c0,
+                         const Eigen::Vector3d& c1)
+{
+  Fold out;
+  if(!(n0.squaredNorm() > 0.5 && n1.squaredNorm() > 0.5))
+    return out;
+  out.angle = std::acos(std::max(-1., std::min(1., n0.dot(n1))));
+  out.concave = (n0 - n1).dot(c1 - c0) > 1e-12 * (c1 - c0).norm();
+  return out;
+}
+
+} // namespace internal
+/// \endcond
+
 /// \ingroup PkgSpectralSegCore
 /// \brief The dual graph of a triangle mesh: one node per face, one edge per
 /// pair of faces that share a mesh edge.
@@ -235,13 +263,9 @@ private:
       if(!e.contact)
         e.length = (q - p).norm();
       e.geodesic_length = (c0 - m).norm() + (c1 - m).norm();
-      const bool defined = n0.squaredNorm() > 0.5 && n1.squaredNorm() > 0.5;
-      const double cosine = std::max(-1., std::min(1., n0.dot(n1)));
-      e.normal_angle = defined ? std::acos(cosine) : 0.;
-      // The fold is concave when each face rises above the other's tangent
-      // plane: (n0 - n1).(c1 - c0) > 0. The tolerance keeps flat pairs convex.
-      const double fold = (n0 - n1).dot(c1 - c0);
-      e.concave = defined && fold > 1e-12 * (c1 - c0).norm();
+      const internal::Fold fold = internal::fold_between(n0, n1, c0, c1);
+      e.normal_angle = fold.angle;
+      e.concave = fold.concave;
       longest_edge_ = std::max(longest_edge_, e.length);
     }
   }

@@ -424,15 +424,12 @@ inline std::vector<double> concave_angle_weights(const Dual_graph& graph, std::s
   for(std::size_t d = 0; d < w.size(); ++d)
   {
     const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
-    const double l0 = normal[e.face[0]].norm(), l1 = normal[e.face[1]].norm();
-    if(!(l0 > 0.) || !(l1 > 0.) || !std::isfinite(l0) || !std::isfinite(l1))
-      continue;
-    const Eigen::Vector3d n0 = normal[e.face[0]] / l0, n1 = normal[e.face[1]] / l1;
-    const Eigen::Vector3d& c0 = geo.centroids[e.face[0]];
-    const Eigen::Vector3d& c1 = geo.centroids[e.face[1]];
-    // concave as in Dual_graph: each face rises above the other's tangent plane
-    if((n0 - n1).dot(c1 - c0) > 1e-12 * (c1 - c0).norm())
-      w[d] = std::acos(std::max(-1., std::min(1., n0.dot(n1))));
+    // judged as Dual_graph judges the faces' own normals (a zero average
+    // stays undefined: no fold)
+    const ::SpectralSeg::internal::Fold fold = ::SpectralSeg::internal::fold_between(
+      normal[e.face[0]].normalized(), normal[e.face[1]].normalized(), geo.centroids[e.face[0]], geo.centroids[e.face[1]]);
+    if(fold.concave)
+      w[d] = fold.angle;
   }
   return w;
 }
