@@ -35,6 +35,7 @@
 //   --ray-caster aabb|embree  --threads N  --normalization p99|max
 //   --samples-factor F (Nyström samples F*k+1)  --vsi-fraction F
 //   --reference-fraction F  faces that cast their cone for their reference point (default 1)
+//   --reference-rays N  rays of each face's cone for its reference point (default: the library's, 16)
 //   --auto-k MAX   choose k itself (segment_k_way_automatic, k in [2, MAX]) instead of k_by_model
 //   --auto-contrast C  its merge limit (boundary's mean concave angle over the mesh's, default 3)
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
@@ -129,6 +130,7 @@ struct Options
   double samples_factor = 0; // experiment: Nyström samples = factor * k + 1
   double vsi_fraction = 0.01;
   double reference_fraction = 1.; // VSI::Reference_point_options::measured_fraction
+  std::size_t reference_rays = 0;  // > 0: VSI::Reference_point_options::rays
   double eta = 0.1, min_part_area = -1.; // < 0: the variant's
   bool structure_only = false, perimeter_base = false, salient_thesis = false;
   std::vector<std::string> salient_set;
@@ -252,6 +254,8 @@ std::vector<double> part_aware(const Options& o, const SpectralSeg::Dual_graph& 
   SpectralSeg::Metrics::VSI_options vo;
   vo.images.sample_fraction = o.vsi_fraction;
   vo.reference.measured_fraction = o.reference_fraction;
+  if(o.reference_rays > 0)
+    vo.reference.rays = o.reference_rays;
   const auto n = o.normalization == "max" ? SpectralSeg::Metrics::Normalization::maximum()
                                           : SpectralSeg::Metrics::Normalization::quantile(0.99);
   return SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma, vo, 0.001, n)(g, exec);
@@ -600,6 +604,8 @@ int run(int argc, char** argv)
       o.vsi_fraction = std::stod(next());
     else if(a == "--reference-fraction")
       o.reference_fraction = std::stod(next());
+    else if(a == "--reference-rays")
+      o.reference_rays = std::stoul(next());
     else if(a == "--samples")
       o.samples = std::stoul(next());
     else if(a == "--threads")
