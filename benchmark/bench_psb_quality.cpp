@@ -36,6 +36,7 @@
 //   --samples-factor F (Nyström samples F*k+1)  --vsi-fraction F
 //   --reference-fraction F  faces that cast their cone for their reference point (default 1)
 //   --reference-rays N  rays of each face's cone for its reference point (default: the library's, 16)
+//   --reference-cone DEG  full opening angle of that cone (default: the library's, 80)
 //   --auto-k MAX   choose k itself (segment_k_way_automatic, k in [2, MAX]) instead of k_by_model
 //   --auto-contrast C  its merge limit (boundary's mean concave angle over the mesh's, default 3)
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
@@ -131,6 +132,7 @@ struct Options
   double vsi_fraction = 0.01;
   double reference_fraction = 1.; // VSI::Reference_point_options::measured_fraction
   std::size_t reference_rays = 0;  // > 0: VSI::Reference_point_options::rays
+  double reference_cone = 0.;      // > 0: VSI::Reference_point_options::cone_angle_degrees
   double eta = 0.1, min_part_area = -1.; // < 0: the variant's
   bool structure_only = false, perimeter_base = false, salient_thesis = false;
   std::vector<std::string> salient_set;
@@ -256,6 +258,8 @@ std::vector<double> part_aware(const Options& o, const SpectralSeg::Dual_graph& 
   vo.reference.measured_fraction = o.reference_fraction;
   if(o.reference_rays > 0)
     vo.reference.rays = o.reference_rays;
+  if(o.reference_cone > 0.)
+    vo.reference.cone_angle_degrees = o.reference_cone;
   const auto n = o.normalization == "max" ? SpectralSeg::Metrics::Normalization::maximum()
                                           : SpectralSeg::Metrics::Normalization::quantile(0.99);
   return SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma, vo, 0.001, n)(g, exec);
@@ -606,6 +610,8 @@ int run(int argc, char** argv)
       o.reference_fraction = std::stod(next());
     else if(a == "--reference-rays")
       o.reference_rays = std::stoul(next());
+    else if(a == "--reference-cone")
+      o.reference_cone = std::stod(next());
     else if(a == "--samples")
       o.samples = std::stoul(next());
     else if(a == "--threads")
