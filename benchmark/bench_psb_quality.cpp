@@ -37,6 +37,7 @@
 //   --reference-fraction F  faces that cast their cone for their reference point (default 1)
 //   --reference-rays N  rays of each face's cone for its reference point (default: the library's, 16)
 //   --reference-cone DEG  full opening angle of that cone (default: the library's, 80)
+//   --over-segmentations N  method contrast: over-segmentations that vote (default: the library's, 1)
 //   --auto-k MAX   choose k itself (segment_k_way_automatic, k in [2, MAX]) instead of k_by_model
 //   --auto-contrast C  its merge limit (boundary's mean concave angle over the mesh's, default 3)
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead
@@ -133,6 +134,7 @@ struct Options
   double reference_fraction = 1.; // VSI::Reference_point_options::measured_fraction
   std::size_t reference_rays = 0;  // > 0: VSI::Reference_point_options::rays
   double reference_cone = 0.;      // > 0: VSI::Reference_point_options::cone_angle_degrees
+  std::size_t over_segmentations = 0; // > 0: Hybrid_options::over_segmentations (method contrast)
   double eta = 0.1, min_part_area = -1.; // < 0: the variant's
   bool structure_only = false, perimeter_base = false, salient_thesis = false;
   std::vector<std::string> salient_set;
@@ -354,6 +356,8 @@ std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g
     ho.neck_scale = o.neck_scale;
   if(o.crease_angle >= 0.)
     ho.k_way.crease_angle = o.crease_angle;
+  if(o.over_segmentations > 0)
+    ho.over_segmentations = o.over_segmentations;
   return SpectralSeg::segment_hybrid(wg, ho, exec).labels;
 }
 
@@ -612,6 +616,8 @@ int run(int argc, char** argv)
       o.reference_rays = std::stoul(next());
     else if(a == "--reference-cone")
       o.reference_cone = std::stod(next());
+    else if(a == "--over-segmentations")
+      o.over_segmentations = std::stoul(next());
     else if(a == "--samples")
       o.samples = std::stoul(next());
     else if(a == "--threads")

@@ -169,6 +169,7 @@ endif()
 run_cli(0 "segments: ([2-9]|1[0-9]|20)\n" segment ${DATA}/elephant.off --k auto --labels ${WORK}/el_auto.seg -q)
 run_cli(0 "segments: [2-5]\n" segment ${DATA}/elephant.off --k auto --max-k 5 --labels ${WORK}/el_auto5.seg -q)
 run_cli(0 "segments: ([2-9]|1[0-9]|20)\n" segment ${DATA}/elephant.off --k auto --neck-scale 0 --labels ${WORK}/el_auto_noneck.seg -q)
+run_cli(0 "segments: ([2-9]|1[0-9]|20)\n" segment ${DATA}/elephant.off --k auto --over-segmentations 5 --labels ${WORK}/el_auto_os5.seg -q)
 # --auto-method salient-cuts: the thesis's ch. 6, its hierarchy in the JSON, cut to 3 parts or depth 1
 run_cli(0 "segments: [1-9][0-9]*\n.*json:" segment ${DATA}/elephant.off --k auto --auto-method salient-cuts
         --labels ${WORK}/el_sc.seg --json ${WORK}/el_sc.json -q)
@@ -376,6 +377,9 @@ run_cli(2 "--min-boundary-contrast: 'nan'" segment ${WORK}/quads.off --k auto --
 run_cli(2 "--neck-scale: '-1'" segment ${WORK}/quads.off --k auto --neck-scale -1 --labels ${WORK}/q.seg)
 run_cli(2 "error: --neck-scale cannot be used here: it applies to --auto-method contrast-merge" segment ${WORK}/quads.off
         --k auto --auto-method concave-merge --neck-scale 0.5 --labels ${WORK}/q.seg)
+run_cli(2 "--over-segmentations: '0'" segment ${WORK}/quads.off --k auto --over-segmentations 0 --labels ${WORK}/q.seg)
+run_cli(2 "error: --over-segmentations cannot be used here: it applies to --k auto" segment ${WORK}/quads.off
+        --k 2 --over-segmentations 5 --labels ${WORK}/q.seg)
 run_cli(2 "--vsi-fraction: 'nan'" distance ${WORK}/quads.off --from 0 --vsi-fraction nan --field ${WORK}/q.txt)
 run_cli(2 "--weights: '1,,1': item ''" distance ${WORK}/quads.off --from 0 --weights 1,,1 --field ${WORK}/q.txt)
 run_cli(2 "--weights: '1e308,1e308,1e308'" distance ${WORK}/quads.off --from 0 --weights 1e308,1e308,1e308 --field ${WORK}/q.txt)

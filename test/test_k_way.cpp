@@ -590,6 +590,50 @@ TEST_CASE("hybrid segmentation finds the star's parts, deterministically, and ch
   }
 }
 
+TEST_CASE("most typical over-segmentation: the medoid of the merges, coarser clusterings, the option", "[hybrid][medoid]")
+{
+  // the area-weighted Rand distance: 0 for the same partition under other
+  // labels, 1/2 between one segment and two halves of equal area
+  const std::vector<double> area{1., 1., 1., 1.};
+  const std::vector<int> halves{0, 0, 1, 1}, renamed{1, 1, 0, 0}, whole{0, 0, 0, 0}, other{0, 1, 0, 1};
+  CHECK(internal::rand_distance(halves, 2, renamed, 2, area) == Approx(0.));
+  CHECK(internal::rand_distance(halves, 2, whole, 1, area) == Approx(0.5));
+  CHECK(internal::rand_distance(halves, 2, other, 2, area) == Approx(0.5));
+  // weighted by area: the halves by area of {3, 1 | ...}
+  CHECK(internal::rand_distance({0, 1, 1, 1}, 2, whole, 1, {3., 1., 1., 1.}) == Approx(1. - (9. + 9.) / 36.));
+  // two answers agree, the odd one out is not the medoid, whatever its place
+  CHECK(internal::medoid_labelling({other, halves, renamed}, {2, 2, 2}, area) == 1);
+  CHECK(internal::medoid_labelling({halves, other, renamed}, {2, 2, 2}, area) == 0);
+  // coarser clusterings: K-means on four blobs from four clusters joined to
+  // 2 by Ward's rule joins the blobs that are near each other
+  Eigen::MatrixXd points(8, 1);
+  points << 0., 0.1, 1., 1.1, 10., 10.1, 11., 11.1;
+  const std::vector<int> four{0, 0, 1, 1, 2, 2, 3, 3};
+  const std::vector<Clustering::Kmeans_result> coarse =
+    internal::coarser_clusterings(points, four, 4, {3, 2}, 100, Execution(1));
+  REQUIRE(coarse.size() == 2);
+  CHECK(coarse[0].centroids.rows() == 3);
+  const std::vector<int>& two = coarse[1].labels;
+  CHECK(two[0] == two[3]);
+  CHECK(two[4] == two[7]);
+  CHECK(two[0] != two[4]);
+  // the option: one over-segmentation is the merge as before; five give an
+  // answer of the star with its parts, the same on any number of threads
+  const Star& s = star();
+  const K_way_result one = segment_hybrid(s.weighted, Hybrid_options(), Execution(1));
+  Hybrid_options five;
+  five.over_segmentations = 5;
+  const K_way_result r1 = segment_hybrid(s.weighted, five, Execution(1));
+  const K_way_result r4 = segment_hybrid(s.weighted, five, Execution(4));
+  CHECK(r1.labels == r4.labels);
+  INFO("segments " << one.number_of_segments << " and " << r1.number_of_segments);
+  CHECK(Evaluation::rand_index_error(r1.labels, s.soup.face_part) < 0.1);
+  CHECK(r1.hierarchy.number_of_parts() == r1.number_of_segments);
+  Hybrid_options none;
+  none.over_segmentations = 0;
+  CHECK_THROWS_AS(segment_hybrid(s.weighted, none), Invalid_input);
+}
+
 TEST_CASE("contrast merge: the embedding separation orders the merges, the limit stays on the contrast", "[hybrid][merge]")
 {
   // a strip of 12 unit squares (24 faces) folded into valleys at x = 4

@@ -49,6 +49,7 @@ struct Segment_options
   double merge_separation = 0.;
   double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
   double neck_scale = 0.;
+  std::size_t over_segmentations = 1;
   std::string labels, out_mesh, png, json;
   bool binary = false;   // PLY outputs in binary
   std::string parts_dir; // one PLY file per segment
@@ -74,6 +75,11 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
                   "stay and slices of a body merge (0: off)")
     ->capture_default_str()
     ->check(Finite_range(0., 1e6));
+  cmd->add_option("--over-segmentations", o.over_segmentations,
+                  "--k auto, contrast-merge: this many over-segmentations (--max-k clusters, then 2, 4, ... fewer) "
+                  "are merged and the answer closest to the others' is kept (5: steadier; 1: one)")
+    ->capture_default_str()
+    ->check(Count(1, 10));
   add_metric_options(*cmd, o.metric);
   cmd->add_option("--kernel", o.kernel, "affinity kernel")
     ->check(CLI::IsMember({"exponential", "gaussian"}))
@@ -171,9 +177,10 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
   const bool automatic = o.k == "auto";
   const bool salient = automatic && (o.salient.method == "salient-cuts" || o.salient.method == "salient-cuts-thesis");
   if(!automatic)
-    ignored({"--max-k", "--min-boundary-contrast", "--auto-method", "--neck-scale", "--parts"}, "it applies to --k auto");
+    ignored({"--max-k", "--min-boundary-contrast", "--auto-method", "--neck-scale", "--over-segmentations", "--parts"},
+            "it applies to --k auto");
   else if(o.salient.method != "contrast-merge")
-    ignored({"--neck-scale"}, "it applies to --auto-method contrast-merge");
+    ignored({"--neck-scale", "--over-segmentations"}, "it applies to --auto-method contrast-merge");
   if(!salient)
     ignored({"--eta", "--structure-only", "--min-part-area", "--max-parts", "--depth"},
             "it applies to --k auto --auto-method salient-cuts");

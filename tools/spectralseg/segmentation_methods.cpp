@@ -45,6 +45,7 @@ Segment_options::Segment_options()
   merge_size_exponent = k_way.merge_size_exponent;
   merge_separation = k_way.merge_separation_scale;
   neck_scale = SpectralSeg::Hybrid_options().neck_scale;
+  over_segmentations = SpectralSeg::Hybrid_options().over_segmentations;
 }
 
 Salient_cut_options::Salient_cut_options()
@@ -242,6 +243,7 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
       if(o.min_boundary_contrast > 0.)
         hybrid.min_boundary_contrast = o.min_boundary_contrast;
       hybrid.neck_scale = o.neck_scale;
+      hybrid.over_segmentations = o.over_segmentations;
       hybrid.parts = o.salient.parts;
       return SpectralSeg::segment_hybrid(weighted, hybrid, exec);
     }

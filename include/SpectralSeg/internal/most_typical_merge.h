@@ -1,0 +1,196 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file most_typical_merge.h
+/// \brief The contrast merge of several over-segmentations of one embedding,
+/// and the one whose answer is most typical of them (internal).
+#ifndef SPECTRALSEG_INTERNAL_MOST_TYPICAL_MERGE_H
+#define SPECTRALSEG_INTERNAL_MOST_TYPICAL_MERGE_H
+
+#include <SpectralSeg/Clustering/Kmeans.h>
+#include <SpectralSeg/Execution.h>
+#include <SpectralSeg/K_way_options.h>
+#include <SpectralSeg/Weighted_dual_graph.h>
+#include <SpectralSeg/internal/merge_by_contrast.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+/// \cond SKIP_IN_MANUAL
+namespace SpectralSeg {
+namespace internal {
+
+// The area-weighted Rand distance between two labellings with labels
+// 0 .. a-1 and 0 .. b-1: the area-weighted share of pairs of points of the
+// surface that one puts in the same segment and the other does not.
+inline double rand_distance(const std::vector<int>& x, std::size_t a, const std::vector<int>& y, std::size_t b,
+                            const std::vector<double>& area)
+{
+  std::vector<double> ax(a, 0.), ay(b, 0.), axy(a * b, 0.);
+  double total = 0.;
+  for(std::size_t f = 0; f < area.size(); ++f) // in face order: thread-independent
+  {
+    ax[std::size_t(x[f])] += area[f];
+    ay[std::size_t(y[f])] += area[f];
+    axy[std::size_t(x[f]) * b + std::size_t(y[f])] += area[f];
+    total += area[f];
+  }
+  double sx = 0., sy = 0., sxy = 0.;
+  for(double v : ax)
+    sx += v * v;
+  for(double v : ay)
+    sy += v * v;
+  for(double v : axy)
+    sxy += v * v;
+  return total > 0. ? std::max(0., sx + sy - 2. * sxy) / (total * total) : 0.;
+}
+
+// The index of the medoid of `labellings` (each with `counts[i]` labels):
+// the one whose summed rand_distance() to the others is smallest (ties:
+// the first).
+inline std::size_t medoid_labelling(const std::vector<std::vector<int>>& labellings,
+                                    const std::vector<std::size_t>& counts, const std::vector<double>& area)
+{
+  const std::size_t m = labellings.size();
+  std::vector<double> sum(m, 0.);
+  for(std::size_t i = 0; i < m; ++i)
+    for(std::size_t j = i + 1; j < m; ++j)
+    {
+      const double d = rand_distance(labellings[i], counts[i], labellings[j], counts[j], area);
+      sum[i] += d;
+      sum[j] += d;
+    }
+  return std::size_t(std::min_element(sum.begin(), sum.end()) - sum.begin());
+}
+
+// Coarser over-segmentations of K-means clusters `base` (labels 0 ..
+// c-1 on the rows of `points`): the clusters' centroids are joined by
+// Ward's rule (the pair whose joining least raises the sum of squared
+// distances first; ties: the smallest labels) down to each of `sizes`
+// (descending, each below c), and K-means is run again from the point
+// nearest each joined centroid (ties: the smallest index). One K-means
+// result per size.
+inline std::vector<Clustering::Kmeans_result> coarser_clusterings(const Eigen::MatrixXd& points,
+                                                                  const std::vector<int>& base, std::size_t c,
+                                                                  const std::vector<std::size_t>& sizes,
+                                                                  std::size_t max_iterations, const Execution& exec)
+{
+  const std::size_t n = base.size();
+  std::vector<double> weight(c, 0.);
+  Eigen::MatrixXd centre = Eigen::MatrixXd::Zero(Eigen::Index(c), points.cols());
+  for(std::size_t f = 0; f < n; ++f) // in point order: thread-independent
+  {
+    weight[std::size_t(base[f])] += 1.;
+    centre.row(base[f]) += points.row(Eigen::Index(f));
+  }
+  std::vector<int> joined(c); // what each cluster of `base` became
+  std::vector<char> alive(c, 0);
+  std::size_t live = 0;
+  for(std::size_t a = 0; a < c; ++a)
+  {
+    joined[a] = int(a);
+    if(weight[a] > 0.)
+    {
+      centre.row(Eigen::Index(a)) /= weight[a];
+      alive[a] = 1;
+      ++live;
+    }
+  }
+  std::vector<Clustering::Kmeans_result> out;
+  for(const std::size_t size : sizes)
+  {
+    while(live > std::max<std::size_t>(size, 1))
+    {
+      double cheapest = std::numeric_limits<double>::infinity();
+      std::size_t ja = c, jb = c;
+      for(std::size_t a = 0; a < c; ++a)
+        for(std::size_t b = a + 1; b < c; ++b)
+          if(alive[a] && alive[b])
+          {
+            const double cost = weight[a] * weight[b] / (weight[a] + weight[b]) *
+                                (centre.row(Eigen::Index(a)) - centre.row(Eigen::Index(b))).squaredNorm();
+            if(cost < cheapest) // strict: ties to the smallest labels
+            {
+              cheapest = cost;
+              ja = a;
+              jb = b;
+            }
+          }
+      centre.row(Eigen::Index(ja)) = (weight[ja] * centre.row(Eigen::Index(ja)) + weight[jb] * centre.row(Eigen::Index(jb))) /
+                                     (weight[ja] + weight[jb]);
+      weight[ja] += weight[jb];
+      alive[jb] = 0;
+      for(int& t : joined)
+        if(t == int(jb))
+          t = int(ja);
+      --live;
+    }
+    // the point nearest each joined centroid seeds K-means
+    std::vector<std::size_t> nearest(c, n);
+    std::vector<double> distance(c, std::numeric_limits<double>::infinity());
+    for(std::size_t f = 0; f < n; ++f)
+    {
+      const std::size_t a = std::size_t(joined[std::size_t(base[f])]);
+      const double d = (points.row(Eigen::Index(f)) - centre.row(Eigen::Index(a))).squaredNorm();
+      if(d < distance[a])
+      {
+        distance[a] = d;
+        nearest[a] = f;
+      }
+    }
+    std::vector<std::size_t> seeds;
+    for(std::size_t a = 0; a < c; ++a)
+      if(alive[a] && nearest[a] < n)
+        seeds.push_back(nearest[a]);
+    out.push_back(Clustering::kmeans(points, seeds.size(), seeds, max_iterations, exec));
+  }
+  return out;
+}
+
+// The over-segmentation of `r` (its K-means clusters `r.clusters` of
+// `r.embedding`, `clusters` of them) replaced by the most typical of
+// `count` over-segmentations: `r.clusters` and coarser_clusterings() of it
+// with 2, 4, ... fewer clusters (at least 2), each merged by contrast
+// (merge_clusters_by_contrast() with these settings), the one whose merged
+// answer is the medoid_labelling() of the answers kept. `r.labels` are set
+// to its clusters; nothing else of `r` but `r.clusters` changes. With
+// `count` at most 1 (or too few clusters), `r` is left as it is.
+template <typename AffinityKernel>
+void most_typical_over_segmentation(const Weighted_dual_graph& graph,
+                                    const Basic_K_way_options<AffinityKernel>& k_way, std::size_t clusters,
+                                    std::size_t count, std::size_t min_segments, double limit, double neck_scale,
+                                    std::size_t reference_faces, K_way_result& r, const Execution& exec)
+{
+  std::vector<std::size_t> sizes;
+  for(std::size_t i = 1; i < count && clusters >= 2 * i + 2; ++i)
+    sizes.push_back(clusters - 2 * i);
+  if(sizes.empty())
+    return;
+  std::vector<Clustering::Kmeans_result> members =
+    coarser_clusterings(r.embedding.coordinates, r.clusters.labels, clusters, sizes, k_way.kmeans_iterations, exec);
+  members.insert(members.begin(), r.clusters);
+  std::vector<std::vector<int>> answers;
+  std::vector<std::size_t> counts;
+  const std::vector<int> own = std::move(r.labels);
+  for(const Clustering::Kmeans_result& member : members)
+  {
+    r.labels = member.labels;
+    Refinement::internal::Merge_history history; // r.hierarchy is left alone
+    counts.push_back(
+      merge_clusters_by_contrast(graph, k_way, min_segments, limit, neck_scale, reference_faces, r, &history));
+    answers.push_back(std::move(r.labels));
+  }
+  const std::size_t kept = medoid_labelling(answers, counts, graph.graph().geometry().areas);
+  r.labels = kept == 0 ? own : members[kept].labels;
+  r.clusters = std::move(members[kept]);
+}
+
+} // namespace internal
+} // namespace SpectralSeg
+/// \endcond
+
+#endif // SPECTRALSEG_INTERNAL_MOST_TYPICAL_MERGE_H
