@@ -37,7 +37,7 @@
 //   --reference-fraction F  faces that cast their cone for their reference point (default 1)
 //   --reference-rays N  rays of each face's cone for its reference point (default: the library's, 16)
 //   --reference-cone DEG  full opening angle of that cone (default: the library's, 80)
-//   --over-segmentations N  method contrast: over-segmentations that vote (default: the library's, 1)
+//   --over-segmentations N  method contrast: over-segmentations that vote (default: the library's, 5)
 //   --auto-k MAX   choose k itself (segment_k_way_automatic, k in [2, MAX]) instead of k_by_model
 //   --auto-contrast C  its merge limit (boundary's mean concave angle over the mesh's, default 3)
 //   --auto-spectrum T  with --auto-k: k from choose_number_of_segments(threshold T) instead

@@ -1195,10 +1195,12 @@ TEST_CASE("k-way tries the contrast merge cut at k and keeps it when its concave
     with.contrast_merge_clusters = clusters;
     const K_way_result a = segment_k_way(weighted, k, alone), c = segment_k_way(weighted, k, with);
     // the candidate is the contrast merge of segment_hybrid() with that
-    // many clusters (at least k), its hierarchy cut at k parts
+    // many clusters (at least k), of one over-segmentation, its hierarchy
+    // cut at k parts
     Hybrid_options h;
     h.k_way = with_method(m);
     h.clusters = std::max(clusters, k);
+    h.over_segmentations = 1;
     h.parts = k;
     const K_way_result d = segment_hybrid(weighted, h);
     const double na = Refinement::concave_normalized_cut(graph, a.labels, with.cut_angle_scale);

@@ -71,7 +71,9 @@ struct Basic_K_way_options
   /// addition): when positive, the mesh is also over-segmented into this
   /// many K-means clusters (at least `k`), split along concave creases and
   /// merged by contrast down to `k` segments, as `segment_hybrid()` does
-  /// with as many clusters (its merge hierarchy cut at `k` parts), then
+  /// with as many clusters and one over-segmentation
+  /// (`Hybrid_options::over_segmentations` = 1; its merge hierarchy cut at
+  /// `k` parts), then
   /// refined by the graph cut; it is kept when its
   /// `Refinement::concave_normalized_cut()` is the lowest. The two merge
   /// orders fail on different shapes: the concave strength keeps a part

@@ -84,16 +84,17 @@ struct Basic_hybrid_options
   /// (doc/benchmarks.md). Meshes with at most this many faces are not
   /// affected
   std::size_t reference_faces = internal::default_reference_faces;
-  /// how many over-segmentations vote (default 1; at least 1): with more
-  /// than one, the K-means clusters are also joined by Ward's rule into 2,
-  /// 4, ... fewer clusters (at least 2), K-means is run again from each
-  /// joined set, every over-segmentation is merged by contrast, and the
-  /// one whose answer is closest to the others' (least summed
-  /// area-weighted Rand distance, the medoid) is kept: an answer that only
-  /// one granularity of the clusters gives is not taken. 5 scores better
-  /// on psb-dev and moves fewer models when the metric is perturbed
-  /// (doc/benchmarks.md); it costs four more K-means runs and merges
-  std::size_t over_segmentations = 1;
+  /// how many over-segmentations vote (default 5; at least 1; 1: one, the
+  /// contrast merge until 2026-11-27): with more than one, the K-means
+  /// clusters are also joined by Ward's rule into 2, 4, ... fewer clusters
+  /// (at least 2), K-means is run again from each joined set, every
+  /// over-segmentation is merged by contrast, and the one whose answer is
+  /// closest to the others' (least summed area-weighted Rand distance, the
+  /// medoid) is kept: an answer that only one granularity of the clusters
+  /// gives is not taken. It scores better on psb-dev and moves fewer models
+  /// when the metric is perturbed (doc/benchmarks.md), for four more
+  /// K-means runs and merges
+  std::size_t over_segmentations = 5;
   /// when positive, the answer has this many parts (or as many as the
   /// over-segmentation has, if fewer): the merge hierarchy
   /// (`K_way_result::hierarchy`) cut at that number instead of where

@@ -77,7 +77,7 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
     ->check(Finite_range(0., 1e6));
   cmd->add_option("--over-segmentations", o.over_segmentations,
                   "--k auto, contrast-merge: this many over-segmentations (--max-k clusters, then 2, 4, ... fewer) "
-                  "are merged and the answer closest to the others' is kept (5: steadier; 1: one)")
+                  "are merged and the answer closest to the others' is kept (1: one, as before 2026-11-27)")
     ->capture_default_str()
     ->check(Count(1, 10));
   add_metric_options(*cmd, o.metric);
