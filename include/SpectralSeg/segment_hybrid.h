@@ -211,13 +211,9 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   r.clusters = Clustering::kmeans(r.embedding.coordinates, clusters, seeds, options.k_way.kmeans_iterations, exec);
   exec.report("k-means", 1.);
   lap("k-means");
-  r.labels = r.clusters.labels;
-  internal::most_typical_over_segmentation(graph, options.k_way, clusters, options.over_segmentations,
-                                           options.min_segments, options.min_boundary_contrast, options.neck_scale,
-                                           options.reference_faces, r, exec);
-  std::size_t m =
-    internal::merge_clusters_by_contrast(graph, options.k_way, options.min_segments, options.min_boundary_contrast,
-                                         options.neck_scale, options.reference_faces, r);
+  std::size_t m = internal::merge_most_typical_over_segmentation(
+    graph, options.k_way, clusters, options.over_segmentations, options.min_segments, options.min_boundary_contrast,
+    options.neck_scale, options.reference_faces, r, exec);
   if(options.parts > 0)
   {
     r.labels = r.hierarchy.labels_with_parts(options.parts);

@@ -54,16 +54,20 @@ inline double separation_exponent(double share)
 // number of segments; with `history`, every merge down to one segment per
 // component is recorded there (Refinement::internal::merge_cheapest_boundaries()).
 // The concave angles are those of Refinement::concave_angle_weights() at
-// `reference_faces` (0: the mesh's own resolution).
+// `reference_faces` (0: the mesh's own resolution), or `given_angles` when
+// not null (those angles, made once for several merges).
 inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
                                      std::vector<int>& labels, std::size_t min_segments, double limit,
                                      double min_area_fraction,
                                      const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
                                      double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr,
-                                     std::size_t reference_faces = 0)
+                                     std::size_t reference_faces = 0,
+                                     const std::vector<double>* given_angles = nullptr)
 {
   // the concave angles at the reference resolution (the mesh's own up to it)
-  const std::vector<double> angles = Refinement::concave_angle_weights(graph, reference_faces);
+  const std::vector<double> own =
+    given_angles ? std::vector<double>() : Refinement::concave_angle_weights(graph, reference_faces);
+  const std::vector<double>& angles = given_angles ? *given_angles : own;
   // mesh means, weighted by edge length
   double length = 0., concave = 0., metric = 0.;
   for(std::size_t d = 0; d < graph.number_of_edges(); ++d)
@@ -131,6 +135,31 @@ inline void keep_merges(const Weighted_dual_graph& graph, Refinement::internal::
     r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
 }
 
+// What the contrast merges of one mesh share: the regions bounded by
+// closed loops of concave creases (empty when `k_way.crease_angle` finds
+// fewer than two) and the concave angles at `reference_faces`.
+struct Contrast_merge_shared
+{
+  std::vector<int> crease_region;
+  std::vector<double> angles;
+};
+
+template <typename AffinityKernel>
+Contrast_merge_shared contrast_merge_shared(const Weighted_dual_graph& graph,
+                                            const Basic_K_way_options<AffinityKernel>& k_way,
+                                            std::size_t reference_faces)
+{
+  Contrast_merge_shared s;
+  if(k_way.crease_angle > 0.)
+  {
+    std::vector<int> region;
+    if(Refinement::crease_regions(graph.graph(), k_way.crease_angle, region) > 1)
+      s.crease_region = std::move(region);
+  }
+  s.angles = Refinement::concave_angle_weights(graph.graph(), reference_faces);
+  return s;
+}
+
 // The contrast merge of segment_hybrid() on `r.labels`, the K-means
 // clusters of `r.embedding`: the clusters split along closed loops of
 // concave creases (`k_way.crease_angle`), made connected and merged by
@@ -139,26 +168,28 @@ inline void keep_merges(const Weighted_dual_graph& graph, Refinement::internal::
 // into `r.hierarchy` (or, with `keep`, into `*keep`, for
 // hierarchy_from_merges() later), whose answer is where `limit` or
 // `min_segments` stops the merge, as are `r.labels`; its concave contrast
-// measured at `reference_faces` (see merge_by_contrast()). Returns the
-// number of segments there.
+// measured at `reference_faces` (see merge_by_contrast()); with `shared`,
+// the crease regions and concave angles are those given (made by
+// contrast_merge_shared() with the same settings). Returns the number of
+// segments there.
 template <typename AffinityKernel>
 std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
                                        const Basic_K_way_options<AffinityKernel>& k_way, std::size_t min_segments,
                                        double limit, double neck_scale, std::size_t reference_faces,
-                                       K_way_result& r, Refinement::internal::Merge_history* keep = nullptr)
+                                       K_way_result& r, Refinement::internal::Merge_history* keep = nullptr,
+                                       const Contrast_merge_shared* shared = nullptr)
 {
-  if(k_way.crease_angle > 0.)
-  {
-    std::vector<int> region;
-    if(Refinement::crease_regions(graph.graph(), k_way.crease_angle, region) > 1)
-      Refinement::split_along_regions(region, r.labels);
-  }
+  const Contrast_merge_shared own =
+    shared ? Contrast_merge_shared() : contrast_merge_shared(graph, k_way, reference_faces);
+  const Contrast_merge_shared& s = shared ? *shared : own;
+  if(!s.crease_region.empty())
+    Refinement::split_along_regions(s.crease_region, r.labels);
   Refinement::make_segments_connected(graph.graph(), r.labels);
   Refinement::internal::Merge_history history;
   const std::size_t m =
     merge_by_contrast(graph.graph(), graph.weights(), r.labels, min_segments, limit, k_way.merge_min_area_fraction,
                       merge_separation(graph, k_way, r.embedding.coordinates), neck_scale, &history,
-                      reference_faces);
+                      reference_faces, &s.angles);
   keep_merges(graph, std::move(history), r, keep);
   return m;
 }

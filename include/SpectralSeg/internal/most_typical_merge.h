@@ -151,42 +151,45 @@ inline std::vector<Clustering::Kmeans_result> coarser_clusterings(const Eigen::M
   return out;
 }
 
-// The over-segmentation of `r` (its K-means clusters `r.clusters` of
-// `r.embedding`, `clusters` of them) replaced by the most typical of
-// `count` over-segmentations: `r.clusters` and coarser_clusterings() of it
-// with 2, 4, ... fewer clusters (at least 2), each merged by contrast
-// (merge_clusters_by_contrast() with these settings), the one whose merged
-// answer is the medoid_labelling() of the answers kept. `r.labels` are set
-// to its clusters; nothing else of `r` but `r.clusters` changes. With
-// `count` at most 1 (or too few clusters), `r` is left as it is.
+// The contrast merge of segment_hybrid() (merge_clusters_by_contrast()
+// with these settings) on the most typical of `count` over-segmentations:
+// `r.clusters` (`clusters` K-means clusters of `r.embedding`) and
+// coarser_clusterings() of it with 2, 4, ... fewer clusters (at least 2),
+// each merged by contrast; the one whose answer is the medoid_labelling()
+// of the answers is kept: `r.labels` are its answer, `r.hierarchy` its
+// merges and `r.clusters` its clusters. The crease regions and concave
+// angles are made once for all the merges. With `count` at most 1 (or too
+// few clusters), merge_clusters_by_contrast() on `r.clusters` alone.
+// Returns the number of segments of the answer.
 template <typename AffinityKernel>
-void most_typical_over_segmentation(const Weighted_dual_graph& graph,
-                                    const Basic_K_way_options<AffinityKernel>& k_way, std::size_t clusters,
-                                    std::size_t count, std::size_t min_segments, double limit, double neck_scale,
-                                    std::size_t reference_faces, K_way_result& r, const Execution& exec)
+std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& graph,
+                                                 const Basic_K_way_options<AffinityKernel>& k_way,
+                                                 std::size_t clusters, std::size_t count, std::size_t min_segments,
+                                                 double limit, double neck_scale, std::size_t reference_faces,
+                                                 K_way_result& r, const Execution& exec)
 {
   std::vector<std::size_t> sizes;
   for(std::size_t i = 1; i < count && clusters >= 2 * i + 2; ++i)
     sizes.push_back(clusters - 2 * i);
-  if(sizes.empty())
-    return;
   std::vector<Clustering::Kmeans_result> members =
     coarser_clusterings(r.embedding.coordinates, r.clusters.labels, clusters, sizes, k_way.kmeans_iterations, exec);
-  members.insert(members.begin(), r.clusters);
+  members.insert(members.begin(), std::move(r.clusters));
+  const Contrast_merge_shared shared = contrast_merge_shared(graph, k_way, reference_faces);
   std::vector<std::vector<int>> answers;
   std::vector<std::size_t> counts;
-  const std::vector<int> own = std::move(r.labels);
-  for(const Clustering::Kmeans_result& member : members)
+  std::vector<Refinement::internal::Merge_history> histories(members.size());
+  for(std::size_t i = 0; i < members.size(); ++i)
   {
-    r.labels = member.labels;
-    Refinement::internal::Merge_history history; // r.hierarchy is left alone
-    counts.push_back(
-      merge_clusters_by_contrast(graph, k_way, min_segments, limit, neck_scale, reference_faces, r, &history));
+    r.labels = members[i].labels;
+    counts.push_back(merge_clusters_by_contrast(graph, k_way, min_segments, limit, neck_scale, reference_faces, r,
+                                                &histories[i], &shared));
     answers.push_back(std::move(r.labels));
   }
-  const std::size_t kept = medoid_labelling(answers, counts, graph.graph().geometry().areas);
-  r.labels = kept == 0 ? own : members[kept].labels;
+  const std::size_t kept = members.size() > 1 ? medoid_labelling(answers, counts, graph.graph().geometry().areas) : 0;
+  r.labels = std::move(answers[kept]);
   r.clusters = std::move(members[kept]);
+  keep_merges(graph, std::move(histories[kept]), r, nullptr);
+  return counts[kept];
 }
 
 } // namespace internal
