@@ -610,7 +610,7 @@ TEST_CASE("most typical over-segmentation: the medoid of the merges, coarser clu
   points << 0., 0.1, 1., 1.1, 10., 10.1, 11., 11.1;
   const std::vector<int> four{0, 0, 1, 1, 2, 2, 3, 3};
   const std::vector<Clustering::Kmeans_result> coarse =
-    internal::coarser_clusterings(points, four, 4, {3, 2}, 100, Execution(1));
+    internal::coarser_clusterings(points, four, 4, {3, 2}, 100, 0, Execution(1));
   REQUIRE(coarse.size() == 2);
   CHECK(coarse[0].centroids.rows() == 3);
   const std::vector<int>& two = coarse[1].labels;
@@ -1093,6 +1093,30 @@ TEST_CASE("kmeans skips points by bounds and still gives Lloyd's labels", "[kmea
   CHECK(fast.labels == labels);
   CHECK(fast.converged);
   CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(1)).labels == fast.labels);
+
+  // with a sample limit: first every 6th point, then all from there; the
+  // answer is a fixed point of Lloyd's rounds on all the points
+  const Clustering::Kmeans_result sampled = Clustering::kmeans(points, k, seeds, 300, Execution(2), 500);
+  CHECK(sampled.converged);
+  CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(1), 500).labels == sampled.labels);
+  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(Eigen::Index(k), Eigen::Index(dims));
+  std::vector<double> count(k, 0.);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    sum.row(sampled.labels[i]) += points.row(Eigen::Index(i));
+    count[std::size_t(sampled.labels[i])] += 1.;
+  }
+  std::size_t elsewhere = 0; // points not nearest their own centroid
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    Eigen::Index nearest = 0;
+    (sampled.centroids.rowwise() - points.row(Eigen::Index(i))).rowwise().squaredNorm().minCoeff(&nearest);
+    elsewhere += nearest != sampled.labels[i];
+  }
+  CHECK(elsewhere == 0);
+  for(std::size_t c = 0; c < k; ++c)
+    if(count[c] > 0.)
+      CHECK((sampled.centroids.row(Eigen::Index(c)) - sum.row(Eigen::Index(c)) / count[c]).norm() < 1e-9);
 }
 
 TEST_CASE("concave normalized cut: boundaries along concave creases cost less", "[k_way][choice]")

@@ -43,6 +43,12 @@ struct Basic_K_way_options
   Refinement::Graph_cut_options graph_cut = Refinement::Graph_cut_options::banded();
   /// bound on K-means rounds
   std::size_t kmeans_iterations = 100;
+  /// on meshes of more faces than this, K-means first runs on every
+  /// \f$\lceil n / \f$`kmeans_sample_limit`\f$\rceil\f$-th face, then on
+  /// all of them from the centroids found (`Clustering::kmeans()`; our
+  /// addition, fewer rounds over all the faces); 0: on all of them from
+  /// the seeds
+  std::size_t kmeans_sample_limit = 100000;
   /// Nyström path: seed K-means with the first `k` sample faces (the
   /// thesis, 5.5); if false, with max-min seeds in the embedding, as the
   /// exact path does
@@ -152,6 +158,7 @@ struct Basic_K_way_options
     o.boundary_enhancement = boundary_enhancement;
     o.graph_cut = graph_cut;
     o.kmeans_iterations = kmeans_iterations;
+    o.kmeans_sample_limit = kmeans_sample_limit;
     o.seed_with_samples = seed_with_samples;
     o.extra_clusters = extra_clusters;
     o.alternative_extra_clusters = alternative_extra_clusters;

@@ -208,7 +208,8 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   if(!r.embedding.exact && options.k_way.seed_with_samples)
     for(std::size_t i = 0; i < clusters && i < r.embedding.samples.size(); ++i)
       seeds.push_back(r.embedding.samples[i]);
-  r.clusters = Clustering::kmeans(r.embedding.coordinates, clusters, seeds, options.k_way.kmeans_iterations, exec);
+  r.clusters = Clustering::kmeans(r.embedding.coordinates, clusters, seeds, options.k_way.kmeans_iterations, exec,
+                                 options.k_way.kmeans_sample_limit);
   exec.report("k-means", 1.);
   lap("k-means");
   std::size_t m = internal::merge_most_typical_over_segmentation(

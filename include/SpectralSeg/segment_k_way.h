@@ -62,7 +62,8 @@ void kmeans_clusters(std::size_t k, const Basic_K_way_options<AffinityKernel>& o
   if(!r.embedding.exact && options.seed_with_samples)
     for(std::size_t i = 0; i < k && i < r.embedding.samples.size(); ++i)
       seeds.push_back(r.embedding.samples[i]);
-  r.clusters = Clustering::kmeans(r.embedding.coordinates, k, seeds, options.kmeans_iterations, exec);
+  r.clusters = Clustering::kmeans(r.embedding.coordinates, k, seeds, options.kmeans_iterations, exec,
+                                 options.kmeans_sample_limit);
   r.labels = r.clusters.labels;
   exec.report("k-means", 1.);
   lap("k-means");

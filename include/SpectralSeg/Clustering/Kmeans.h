@@ -76,38 +76,18 @@ inline std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd& points, std
   return seeds;
 }
 
-/// \ingroup PkgSpectralSegClustering
-/// \brief Lloyd's K-means on the rows of `points`, seeded with the given
-/// rows (or with `max_min_seeds()` when `seeds` is empty).
-///
-/// Each round assigns every point to its nearest centroid (ties to the
-/// smaller cluster index) and moves every centroid to the mean of its
-/// points; a cluster that loses all its points keeps its centroid. Sums are
-/// taken in point order, so the result does not depend on the thread count.
-///
-/// \throws Invalid_input if `k` is 0 or exceeds the number of points
-inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::vector<std::size_t> seeds = {},
-                            std::size_t max_iterations = 100, const Execution& exec = Execution())
+namespace internal {
+
+// Lloyd's rounds on n points of `dims` coordinates stored point after point
+// in `p`, from the centroids in `r.centroids`; sets r.labels,
+// r.iterations and r.converged.
+inline void lloyd(const std::vector<double>& p, std::size_t n, std::size_t dims, Kmeans_result& r,
+                  std::size_t max_iterations, const Execution& exec)
 {
-  const std::size_t n = static_cast<std::size_t>(points.rows());
-  if(k == 0 || k > n)
-    throw Invalid_input("K-means: cannot make " + std::to_string(k) + " clusters of " + std::to_string(n) + " points");
-  if(seeds.empty())
-    seeds = max_min_seeds(points, k);
-  Kmeans_result r;
-  r.seeds = seeds;
-  const std::size_t kk = seeds.size();
-  r.centroids.resize(static_cast<Eigen::Index>(kk), points.cols());
-  for(std::size_t c = 0; c < kk; ++c)
-    r.centroids.row(Eigen::Index(c)) = points.row(Eigen::Index(seeds[c]));
+  const std::size_t kk = static_cast<std::size_t>(r.centroids.rows());
   r.labels.assign(n, -1);
-  // points and centroids stored point after point, distances summed in
-  // coordinate order: the same sums as Eigen's, several times faster
-  const std::size_t dims = static_cast<std::size_t>(points.cols());
-  std::vector<double> p(n * dims), centre(kk * dims);
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t j = 0; j < dims; ++j)
-      p[i * dims + j] = points(Eigen::Index(i), Eigen::Index(j));
+  r.converged = false;
+  std::vector<double> centre(kk * dims);
   std::vector<char> changed(n, 0);
   const auto squared_distance = [dims](const double* x, const double* y) {
     double d = 0.;
@@ -251,6 +231,59 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
       lower[i] -= own == farthest ? second : moved[farthest];
     });
   }
+}
+
+} // namespace internal
+
+/// \ingroup PkgSpectralSegClustering
+/// \brief Lloyd's K-means on the rows of `points`, seeded with the given
+/// rows (or with `max_min_seeds()` when `seeds` is empty).
+///
+/// Each round assigns every point to its nearest centroid (ties to the
+/// smaller cluster index) and moves every centroid to the mean of its
+/// points; a cluster that loses all its points keeps its centroid. Sums are
+/// taken in point order, so the result does not depend on the thread count.
+///
+/// With more than `sample_limit` points (0: no limit), the rounds first run
+/// on every \f$\lceil n / \f$`sample_limit`\f$\rceil\f$-th point from the
+/// seeds, and then on all the points from the centroids found: the answer
+/// is still a fixed point of Lloyd's rounds on all the points, reached in
+/// fewer rounds over all of them. `Kmeans_result::iterations` counts the
+/// rounds on all the points.
+///
+/// \throws Invalid_input if `k` is 0 or exceeds the number of points
+inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::vector<std::size_t> seeds = {},
+                            std::size_t max_iterations = 100, const Execution& exec = Execution(),
+                            std::size_t sample_limit = 0)
+{
+  const std::size_t n = static_cast<std::size_t>(points.rows());
+  if(k == 0 || k > n)
+    throw Invalid_input("K-means: cannot make " + std::to_string(k) + " clusters of " + std::to_string(n) + " points");
+  if(seeds.empty())
+    seeds = max_min_seeds(points, k);
+  Kmeans_result r;
+  r.seeds = seeds;
+  const std::size_t kk = seeds.size();
+  r.centroids.resize(static_cast<Eigen::Index>(kk), points.cols());
+  for(std::size_t c = 0; c < kk; ++c)
+    r.centroids.row(Eigen::Index(c)) = points.row(Eigen::Index(seeds[c]));
+  // points stored point after point, distances summed in coordinate order:
+  // the same sums as Eigen's, several times faster
+  const std::size_t dims = static_cast<std::size_t>(points.cols());
+  const auto copy_rows = [&](std::size_t stride) {
+    const std::size_t m = (n + stride - 1) / stride;
+    std::vector<double> p(m * dims);
+    for(std::size_t i = 0; i < m; ++i)
+      for(std::size_t j = 0; j < dims; ++j)
+        p[i * dims + j] = points(Eigen::Index(i * stride), Eigen::Index(j));
+    return p;
+  };
+  if(sample_limit > 0 && n > sample_limit)
+  {
+    const std::size_t stride = (n + sample_limit - 1) / sample_limit;
+    internal::lloyd(copy_rows(stride), (n + stride - 1) / stride, dims, r, max_iterations, exec);
+  }
+  internal::lloyd(copy_rows(1), n, dims, r, max_iterations, exec);
   return r;
 }
 

@@ -77,7 +77,8 @@ inline std::size_t medoid_labelling(const std::vector<std::vector<int>>& labelli
 inline std::vector<Clustering::Kmeans_result> coarser_clusterings(const Eigen::MatrixXd& points,
                                                                   const std::vector<int>& base, std::size_t c,
                                                                   const std::vector<std::size_t>& sizes,
-                                                                  std::size_t max_iterations, const Execution& exec)
+                                                                  std::size_t max_iterations, std::size_t sample_limit,
+                                                                  const Execution& exec)
 {
   const std::size_t n = base.size();
   std::vector<double> weight(c, 0.);
@@ -146,7 +147,7 @@ inline std::vector<Clustering::Kmeans_result> coarser_clusterings(const Eigen::M
     for(std::size_t a = 0; a < c; ++a)
       if(alive[a] && nearest[a] < n)
         seeds.push_back(nearest[a]);
-    out.push_back(Clustering::kmeans(points, seeds.size(), seeds, max_iterations, exec));
+    out.push_back(Clustering::kmeans(points, seeds.size(), seeds, max_iterations, exec, sample_limit));
   }
   return out;
 }
@@ -172,7 +173,8 @@ std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& grap
   for(std::size_t i = 1; i < count && clusters >= 2 * i + 2; ++i)
     sizes.push_back(clusters - 2 * i);
   std::vector<Clustering::Kmeans_result> members =
-    coarser_clusterings(r.embedding.coordinates, r.clusters.labels, clusters, sizes, k_way.kmeans_iterations, exec);
+    coarser_clusterings(r.embedding.coordinates, r.clusters.labels, clusters, sizes, k_way.kmeans_iterations,
+                        k_way.kmeans_sample_limit, exec);
   members.insert(members.begin(), std::move(r.clusters));
   const Contrast_merge_shared shared = contrast_merge_shared(graph, k_way, reference_faces);
   std::vector<std::vector<int>> answers;
