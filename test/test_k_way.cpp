@@ -1114,6 +1114,21 @@ TEST_CASE("kmeans skips points by bounds and still gives Lloyd's labels", "[kmea
     elsewhere += nearest != sampled.labels[i];
   }
   CHECK(elsewhere == 0);
+  // more centroids than the distance loop's block (64): the same rule
+  std::vector<std::size_t> many;
+  for(std::size_t c = 0; c < 70; ++c)
+    many.push_back(c * 41);
+  const Clustering::Kmeans_result wide = Clustering::kmeans(points, many.size(), many, 300, Execution(2));
+  CHECK(wide.converged);
+  CHECK(Clustering::kmeans(points, many.size(), many, 300, Execution(1)).labels == wide.labels);
+  std::size_t wide_elsewhere = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    Eigen::Index nearest = 0;
+    (wide.centroids.rowwise() - points.row(Eigen::Index(i))).rowwise().squaredNorm().minCoeff(&nearest);
+    wide_elsewhere += nearest != wide.labels[i];
+  }
+  CHECK(wide_elsewhere == 0);
   for(std::size_t c = 0; c < k; ++c)
     if(count[c] > 0.)
       CHECK((sampled.centroids.row(Eigen::Index(c)) - sum.row(Eigen::Index(c)) / count[c]).norm() < 1e-9);

@@ -87,7 +87,9 @@ inline void lloyd(const std::vector<double>& p, std::size_t n, std::size_t dims,
   const std::size_t kk = static_cast<std::size_t>(r.centroids.rows());
   r.labels.assign(n, -1);
   r.converged = false;
-  std::vector<double> centre(kk * dims);
+  // the centroids point after point, and coordinate after coordinate
+  std::vector<double> centre(kk * dims), across(kk * dims);
+  constexpr std::size_t block_centroids = 64;
   std::vector<char> changed(n, 0);
   const auto squared_distance = [dims](const double* x, const double* y) {
     double d = 0.;
@@ -116,7 +118,10 @@ inline void lloyd(const std::vector<double>& p, std::size_t n, std::size_t dims,
   {
     for(std::size_t c = 0; c < kk; ++c)
       for(std::size_t j = 0; j < dims; ++j)
+      {
         centre[c * dims + j] = r.centroids(Eigen::Index(c), Eigen::Index(j));
+        across[j * kk + c] = centre[c * dims + j];
+      }
     for(std::size_t c = 0; c < kk; ++c)
     {
       double nearest = std::numeric_limits<double>::infinity();
@@ -143,11 +148,43 @@ inline void lloyd(const std::vector<double>& p, std::size_t n, std::size_t dims,
           return;
         }
       }
+      // the distances to every centroid, coordinate after coordinate over
+      // the centroids (a loop the compiler vectorises; each distance sums
+      // its coordinates in the same order as squared_distance())
+      double near[block_centroids];
+      std::vector<double> far;
+      double* d_of = near;
+      if(kk > block_centroids)
+      {
+        far.resize(kk);
+        d_of = far.data();
+      }
+      if(dims > 0)
+      {
+        const double* t = across.data();
+        for(std::size_t c = 0; c < kk; ++c)
+        {
+          const double e = x[0] - t[c];
+          d_of[c] = e * e;
+        }
+        for(std::size_t j = 1; j < dims; ++j)
+        {
+          t = across.data() + j * kk;
+          const double xj = x[j];
+          for(std::size_t c = 0; c < kk; ++c)
+          {
+            const double e = xj - t[c];
+            d_of[c] += e * e;
+          }
+        }
+      }
+      else
+        std::fill(d_of, d_of + kk, 0.);
       int best = 0;
       double best_d = std::numeric_limits<double>::infinity(), second_d = std::numeric_limits<double>::infinity();
       for(std::size_t c = 0; c < kk; ++c)
       {
-        const double d = squared_distance(x, centre.data() + c * dims);
+        const double d = d_of[c];
         if(d < best_d)
         {
           second_d = best_d;
