@@ -78,10 +78,10 @@ inline std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd& points, std
 
 namespace internal {
 
-// Lloyd's rounds on n points of `dims` coordinates stored point after point
-// in `p`, from the centroids in `r.centroids`; sets r.labels,
-// r.iterations and r.converged.
-inline void lloyd(const std::vector<double>& p, std::size_t n, std::size_t dims, Kmeans_result& r,
+// Lloyd's rounds on n points of `dims` coordinates, point i's at
+// p[i * step], ..., p[i * step + dims - 1], from the centroids in
+// `r.centroids`; sets r.labels, r.iterations and r.converged.
+inline void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t step, Kmeans_result& r,
                   std::size_t max_iterations, const Execution& exec)
 {
   const std::size_t kk = static_cast<std::size_t>(r.centroids.rows());
@@ -131,7 +131,7 @@ inline void lloyd(const std::vector<double>& p, std::size_t n, std::size_t dims,
       half_gap[c] = 0.5 * std::sqrt(nearest);
     }
     ::SpectralSeg::internal::parallel_range(0, n, exec.threads(), [&](std::size_t i) {
-      const double* x = p.data() + i * dims;
+      const double* x = p + i * step;
       const int own = r.labels[i];
       if(own >= 0)
       {
@@ -231,7 +231,7 @@ inline void lloyd(const std::vector<double>& p, std::size_t n, std::size_t dims,
       {
         const std::size_t c = std::size_t(r.labels[i]);
         for(std::size_t j = 0; j < dims; ++j)
-          s[c * dims + j] += p[i * dims + j];
+          s[c * dims + j] += p[i * step + j];
         ++m[c];
       }
     });
@@ -307,20 +307,17 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
   // points stored point after point, distances summed in coordinate order:
   // the same sums as Eigen's, several times faster
   const std::size_t dims = static_cast<std::size_t>(points.cols());
-  const auto copy_rows = [&](std::size_t stride) {
-    const std::size_t m = (n + stride - 1) / stride;
-    std::vector<double> p(m * dims);
-    for(std::size_t i = 0; i < m; ++i)
-      for(std::size_t j = 0; j < dims; ++j)
-        p[i * dims + j] = points(Eigen::Index(i * stride), Eigen::Index(j));
-    return p;
-  };
+  std::vector<double> p(n * dims);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < dims; ++j)
+      p[i * dims + j] = points(Eigen::Index(i), Eigen::Index(j));
   if(sample_limit > 0 && n > sample_limit)
   {
+    // every stride-th point, read in place
     const std::size_t stride = (n + sample_limit - 1) / sample_limit;
-    internal::lloyd(copy_rows(stride), (n + stride - 1) / stride, dims, r, max_iterations, exec);
+    internal::lloyd(p.data(), (n + stride - 1) / stride, dims, stride * dims, r, max_iterations, exec);
   }
-  internal::lloyd(copy_rows(1), n, dims, r, max_iterations, exec);
+  internal::lloyd(p.data(), n, dims, dims, r, max_iterations, exec);
   return r;
 }
 
