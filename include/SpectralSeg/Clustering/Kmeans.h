@@ -150,22 +150,17 @@ inline void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t 
       }
       // the distances to every centroid, coordinate after coordinate over
       // the centroids (a loop the compiler vectorises; each distance sums
-      // its coordinates in the same order as squared_distance())
+      // its coordinates in the same order as squared_distance()); with more
+      // centroids than the block holds, one centroid after the other
       double near[block_centroids];
-      std::vector<double> far;
-      double* d_of = near;
-      if(kk > block_centroids)
-      {
-        far.resize(kk);
-        d_of = far.data();
-      }
-      if(dims > 0)
+      const bool blocked = kk <= block_centroids && dims > 0;
+      if(blocked)
       {
         const double* t = across.data();
         for(std::size_t c = 0; c < kk; ++c)
         {
           const double e = x[0] - t[c];
-          d_of[c] = e * e;
+          near[c] = e * e;
         }
         for(std::size_t j = 1; j < dims; ++j)
         {
@@ -174,17 +169,15 @@ inline void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t 
           for(std::size_t c = 0; c < kk; ++c)
           {
             const double e = xj - t[c];
-            d_of[c] += e * e;
+            near[c] += e * e;
           }
         }
       }
-      else
-        std::fill(d_of, d_of + kk, 0.);
       int best = 0;
       double best_d = std::numeric_limits<double>::infinity(), second_d = std::numeric_limits<double>::infinity();
       for(std::size_t c = 0; c < kk; ++c)
       {
-        const double d = d_of[c];
+        const double d = blocked ? near[c] : squared_distance(x, centre.data() + c * dims);
         if(d < best_d)
         {
           second_d = best_d;
