@@ -194,6 +194,29 @@ TEST_CASE("distance rows match single-source runs for any thread count", "[dista
   }
 }
 
+TEST_CASE("distance rows with progress reports: batches that every thread shares", "[distances][threads]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::welded(test_meshes::box(3., 1., 1., 4)));
+  const Dual_graph g = make_dual_graph(m);
+  const Weighted_dual_graph wg(g, Metrics::Geodesic_weight()(g));
+  std::vector<Dual_graph::size_type> sources;
+  for(Dual_graph::size_type f = 0; f < 21; ++f)
+    sources.push_back(4 * f);
+  std::vector<double> reports;
+  const Execution exec(2, [&reports](const std::string&, double fraction) {
+    reports.push_back(fraction);
+    return true;
+  });
+  const auto rows = wg.distance_rows(sources, exec);
+  CHECK(rows == wg.distance_rows(sources, Execution(1)));
+  // the start, then one report per batch of at least 4 rows per thread (a
+  // batch of one row would leave the other thread idle): 21 rows, 3 batches
+  REQUIRE(reports.size() == 4);
+  CHECK(reports.front() == 0.);
+  CHECK(reports.back() == 1.);
+  CHECK(std::is_sorted(reports.begin(), reports.end()));
+}
+
 TEST_CASE("faces in another component are at infinite distance", "[distances][components]")
 {
   test_meshes::Soup s = test_meshes::square_strip(2);

@@ -57,8 +57,11 @@ void parallel_for(std::size_t n, const Execution& exec, const std::string& stage
   exec.report(stage, 0.);
   if(n == 0)
     return;
+  // at most 50 reports, and at least four indices per thread in a batch: with
+  // fewer, a batch of one index (a few Dijkstra rows, say) would run on one
+  // thread while the others wait
   const std::size_t batches = exec.has_progress() ? std::min<std::size_t>(n, 50) : 1;
-  const std::size_t batch = (n + batches - 1) / batches;
+  const std::size_t batch = std::max<std::size_t>((n + batches - 1) / batches, 4 * std::size_t(exec.threads()));
   for(std::size_t b = 0; b < n; b += batch)
   {
     const std::size_t e = std::min(n, b + batch);
