@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <deque>
 #include <functional>
 #include <future>
 #include <limits>
@@ -412,56 +413,15 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     shared = Embedding::internal::nystrom_rows(graph, largest + 1, options.kernel, eo, exec);
     lap("embedding");
   }
-  // The stages that read the embedding (embedding and K-means, which use
-  // every thread, the merge and the graph cut's data terms) for one
-  // candidate after the other, then the mostly sequential ones (max-flow
-  // moves, connected segments) side by side: each thread takes the next
-  // candidate not yet taken, the threads shared between them; this thread takes the first
-  // (before the others start, so the progress callback is always reached)
-  // and reports progress to `exec`, the others stop when it throws. A
-  // candidate's result does not depend on where, or on how many threads, it
-  // ran.
-  for(std::size_t i = 0; i < specs.size(); ++i)
-  {
-    internal::Stage_timer t(times[i], true);
-    K_way_result& c = candidates[i];
-    const std::size_t dimensions = specs[i].dimensions;
-    if(share)
-    {
-      // the candidate's leading rows, turned into affinities: the last
-      // candidate takes the rows themselves when it needs them all
-      const auto l = static_cast<Eigen::Index>(dimensions + 1);
-      Embedding::internal::Row_matrix w = i + 1 == specs.size() && l == shared.distances.rows()
-                                            ? std::move(shared.distances)
-                                            : Embedding::internal::Row_matrix(shared.distances.topRows(l));
-      const double width = Embedding::internal::distances_to_affinities(w, options.kernel, exec);
-      c.embedding = Embedding::internal::nystrom_embedding_from_affinities(
-        w, std::vector<Dual_graph::size_type>(shared.samples.begin(), shared.samples.begin() + l), width, dimensions,
-        exec);
-    }
-    else
-      c.embedding = internal::embed(graph, dimensions, options.kernel, eo, exec);
-    t("embedding");
-    internal::kmeans_clusters(specs[i].clusters, options, c, t, exec);
-    // the merge and the graph cut's data terms, the last to read the
-    // embedding: without coordinates in the result, it goes before the
-    // next candidate's is made
-    if(specs[i].contrast)
-    {
-      // the contrast merge down to k segments: its hierarchy cut at k
-      const std::size_t m = internal::merge_clusters_by_contrast(
-        graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale,
-        internal::default_reference_faces, c, &histories[i]);
-      t("merge");
-      cuts[i] = internal::prepare_graph_cut_merged(graph, m, specs[i].clusters, options, c, release);
-      c.contrast_merge = true;
-    }
-    else
-      cuts[i] = internal::prepare_refine_clusters(graph, specs[i].clusters, k, options, c, t, &histories[i], release);
-    if(cuts[i].run)
-      t("graph cut");
-  }
-  shared = Embedding::internal::Nystrom_rows(); // no longer needed
+  // Each candidate in turn: the stages that read the embedding (embedding
+  // and K-means, which use every thread, the merge and the graph cut's data
+  // terms) on this thread, which reports progress to `exec`. Then, with
+  // several threads, its mostly sequential stages (max-flow moves,
+  // connected segments) start on a thread of their own while this thread
+  // goes on with the next candidate, at most `exec.threads() - 1` of them
+  // at a time; the last candidate's run here. Those threads stop when this
+  // one throws. A candidate's result does not depend on where, or on how
+  // many threads, it ran.
   const auto refine = [&](std::size_t i, const Execution& x) {
     internal::Stage_timer t(times[i], true);
     K_way_result& c = candidates[i];
@@ -473,39 +433,73 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
     c.normalized_cut = Refinement::concave_normalized_cut(graph.graph(), c.labels, options.cut_angle_scale);
     t("choice");
   };
+  std::atomic<bool> stop(false);
+  const Execution other(1, [&stop](const std::string&, double) { return !stop.load(); });
+  std::deque<std::future<void>> running;
+  try
   {
-    const std::size_t workers = std::min<std::size_t>(exec.threads(), specs.size());
-    const unsigned threads = std::max(1u, exec.threads() / unsigned(workers));
-    std::atomic<std::size_t> next(0);
-    std::atomic<bool> stop(false);
-    const Execution here = !exec.has_progress() ? Execution(threads)
-                           : Execution(threads, [&exec](const std::string& stage, double fraction) {
-                               exec.report(stage, fraction); // throws when cancelled
-                               return true;
-                             });
-    const Execution other(threads, [&stop](const std::string&, double) { return !stop.load(); });
-    const auto work = [&](std::size_t i, const Execution& x) {
-      for(; i < specs.size() && !stop.load(); i = next++)
-        refine(i, x);
-    };
-    std::vector<std::future<void>> others;
-    try
+    for(std::size_t i = 0; i < specs.size(); ++i)
     {
-      const std::size_t first = next++;
-      for(std::size_t w = 1; w < workers; ++w)
-        others.push_back(std::async(std::launch::async, [&] { work(next++, other); }));
-      work(first, here);
-      for(auto& f : others)
-        f.get(); // rethrows a candidate's exception
+      internal::Stage_timer t(times[i], true);
+      K_way_result& c = candidates[i];
+      const std::size_t dimensions = specs[i].dimensions;
+      if(share)
+      {
+        // the candidate's leading rows, turned into affinities: the last
+        // candidate takes the rows themselves when it needs them all
+        const auto l = static_cast<Eigen::Index>(dimensions + 1);
+        Embedding::internal::Row_matrix w = i + 1 == specs.size() && l == shared.distances.rows()
+                                              ? std::move(shared.distances)
+                                              : Embedding::internal::Row_matrix(shared.distances.topRows(l));
+        const double width = Embedding::internal::distances_to_affinities(w, options.kernel, exec);
+        c.embedding = Embedding::internal::nystrom_embedding_from_affinities(
+          w, std::vector<Dual_graph::size_type>(shared.samples.begin(), shared.samples.begin() + l), width, dimensions,
+          exec);
+      }
+      else
+        c.embedding = internal::embed(graph, dimensions, options.kernel, eo, exec);
+      t("embedding");
+      internal::kmeans_clusters(specs[i].clusters, options, c, t, exec);
+      // the merge and the graph cut's data terms, the last to read the
+      // embedding: without coordinates in the result, it goes before the
+      // next candidate's is made
+      if(specs[i].contrast)
+      {
+        // the contrast merge down to k segments: its hierarchy cut at k
+        const std::size_t m = internal::merge_clusters_by_contrast(
+          graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale,
+          internal::default_reference_faces, c, &histories[i]);
+        t("merge");
+        cuts[i] = internal::prepare_graph_cut_merged(graph, m, specs[i].clusters, options, c, release);
+        c.contrast_merge = true;
+      }
+      else
+        cuts[i] = internal::prepare_refine_clusters(graph, specs[i].clusters, k, options, c, t, &histories[i], release);
+      if(cuts[i].run)
+        t("graph cut");
+      if(i + 1 == specs.size() || exec.threads() < 2)
+      {
+        refine(i, exec);
+        continue;
+      }
+      while(running.size() + 1 >= exec.threads())
+      {
+        running.front().get(); // rethrows a candidate's exception
+        running.pop_front();
+      }
+      running.push_back(std::async(std::launch::async, [&refine, &other, i] { refine(i, other); }));
     }
-    catch(...)
-    {
-      stop = true;
-      for(auto& f : others)
-        if(f.valid())
-          f.wait();
-      throw;
-    }
+    shared = Embedding::internal::Nystrom_rows(); // no longer needed
+    for(; !running.empty(); running.pop_front())
+      running.front().get();
+  }
+  catch(...)
+  {
+    stop = true;
+    for(auto& f : running)
+      if(f.valid())
+        f.wait();
+    throw;
   }
   std::size_t kept = 0;
   for(std::size_t i = 1; i < candidates.size(); ++i)
