@@ -975,8 +975,12 @@ TEST_CASE("alpha expansion: no expansion move improves its result, out-of-reach 
       }
     }
   const double before = p.energy(l);
+  std::vector<std::size_t> l2 = l;
   const double after = Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, l);
   CHECK(after < before);
+  // two threads: the same moves, bit for bit
+  CHECK(Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, l2, 2) == after);
+  CHECK(l2 == l);
   CHECK(after == Approx(p.energy(l)).epsilon(1e-12));
   for(std::size_t v = 0; v < p.vertices; ++v)
     CHECK(std::isfinite(p.cost_of(v, l[v])));
@@ -990,6 +994,62 @@ TEST_CASE("alpha expansion: no expansion move improves its result, out-of-reach 
                                                                                               candidate, delta);
     INFO("alpha " << alpha);
     CHECK(delta >= -1e-9);
+  }
+}
+
+TEST_CASE("alpha expansion on several threads: the moves of one thread, bit for bit", "[graphcut][threads]")
+{
+  // a 48 x 6 grid in 8 stripes of 6 columns, one label each; a vertex may
+  // take the label of the stripe beside it within 2 columns of their
+  // boundary: the moves of distant stripes read disjoint vertices, those of
+  // neighbours do not
+  Refinement::internal::Potts_problem p;
+  const std::size_t columns = 48, rows = 6, width = 6;
+  p.labels = columns / width;
+  std::uint32_t state = 777u;
+  const auto next = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  };
+  std::vector<std::size_t> start(columns * rows);
+  for(std::size_t i = 0; i < columns; ++i)
+    for(std::size_t j = 0; j < rows; ++j)
+    {
+      const std::size_t own = i / width, v = i * rows + j;
+      std::vector<double> costs(p.labels, std::numeric_limits<double>::infinity());
+      costs[own] = 2. * next();
+      if(own > 0 && i % width < 2)
+        costs[own - 1] = 2. * next();
+      if(own + 1 < p.labels && i % width >= width - 2)
+        costs[own + 1] = 2. * next();
+      start[v] = own;
+      p.add_vertex(costs);
+    }
+  for(std::size_t i = 0; i < columns; ++i)
+    for(std::size_t j = 0; j < rows; ++j)
+    {
+      if(i + 1 < columns)
+      {
+        p.edges.emplace_back(i * rows + j, (i + 1) * rows + j);
+        p.weights.push_back(0.3 * next());
+      }
+      if(j + 1 < rows)
+      {
+        p.edges.emplace_back(i * rows + j, i * rows + j + 1);
+        p.weights.push_back(0.3 * next());
+      }
+    }
+  std::vector<std::size_t> one = start;
+  const double energy = Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, one);
+  CHECK(energy < p.energy(start));
+  CHECK(one != start);
+  for(const unsigned threads : {2u, 3u, 8u})
+  {
+    std::vector<std::size_t> l = start;
+    INFO(threads << " threads");
+    CHECK(Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, l, threads) ==
+          energy);
+    CHECK(l == one);
   }
 }
 

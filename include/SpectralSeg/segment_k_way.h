@@ -127,7 +127,7 @@ void finish_graph_cut_merged(const Weighted_dual_graph& graph, const Basic_K_way
   if(p.run)
   {
     exec.report("graph cut", 0.);
-    Refinement::internal::solve_graph_cut(p.problem, r.labels, options.graph_cut);
+    Refinement::internal::solve_graph_cut(p.problem, r.labels, options.graph_cut, exec.threads());
     p = Pending_cut();
     exec.report("graph cut", 1.);
     if(lap)
@@ -244,7 +244,7 @@ void finish_refine_clusters(const Weighted_dual_graph& graph, std::size_t k_fina
   if(p.run)
   {
     exec.report("graph cut", 0.);
-    Refinement::internal::solve_graph_cut(p.problem, r.labels, options.graph_cut);
+    Refinement::internal::solve_graph_cut(p.problem, r.labels, options.graph_cut, exec.threads());
     p = Pending_cut();
     exec.report("graph cut", 1.);
     lap("graph cut");

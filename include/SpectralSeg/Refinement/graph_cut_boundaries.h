@@ -112,8 +112,9 @@ struct Graph_cut_options
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// A Boost max-flow backend: runs the alpha expansion of `problem` from `l`.
-typedef void (*Boost_max_flow_backend)(const Potts_problem& problem, std::vector<std::size_t>& l);
+// A Boost max-flow backend: runs the alpha expansion of `problem` from `l`
+// on the given number of threads.
+typedef void (*Boost_max_flow_backend)(const Potts_problem& problem, std::vector<std::size_t>& l, unsigned threads);
 
 // The Boost backends, registered by graph_cut_boost_backends.h when a
 // program includes it (null otherwise): [0] adjacency list, [1] compressed
@@ -280,14 +281,14 @@ inline Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& 
 }
 
 inline void run_boost_max_flow_backend(Graph_cut_backend backend, const Potts_problem& problem,
-                                       std::vector<std::size_t>& l)
+                                       std::vector<std::size_t>& l, unsigned threads)
 {
   const Boost_max_flow_backend run =
     boost_max_flow_backends()[backend == Graph_cut_backend::boost_adjacency_list ? 0 : 1];
   if(run == nullptr)
     throw Invalid_input("graph cut: the Boost max-flow backends need "
                         "#include <SpectralSeg/Refinement/graph_cut_boost_backends.h> in the program");
-  run(problem, l);
+  run(problem, l, threads);
 }
 
 // The max-flow problem of graph_cut_boundaries(): its variables (the faces
@@ -463,8 +464,10 @@ inline Graph_cut_problem graph_cut_problem(const Dual_graph& graph, const Eigen:
 }
 
 // Runs the alpha expansion of `cut` (made by graph_cut_problem() for
-// `labels`) and writes its labels of the variables into `labels`.
-inline void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labels, const Graph_cut_options& options)
+// `labels`) on `threads` threads (the same result on any number) and
+// writes its labels of the variables into `labels`.
+inline void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labels, const Graph_cut_options& options,
+                            unsigned threads = 1)
 {
   const Potts_problem& problem = cut.problem;
   if(problem.vertices == 0)
@@ -475,13 +478,13 @@ inline void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labe
   if(options.backend == Graph_cut_backend::maxflow)
   {
 #ifdef SPECTRALSEG_USE_MAXFLOW
-    alpha_expansion<Maxflow_impl>(problem, l);
+    alpha_expansion<Maxflow_impl>(problem, l, threads);
 #else
     throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code from CGAL)");
 #endif
   }
   else
-    run_boost_max_flow_backend(options.backend, problem, l);
+    run_boost_max_flow_backend(options.backend, problem, l, threads);
   for(std::size_t v = 0; v < problem.vertices; ++v)
     labels[cut.face_of_variable[v]] = static_cast<int>(l[v]);
 }

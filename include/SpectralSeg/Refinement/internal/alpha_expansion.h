@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <future>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -232,47 +233,113 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
 // read off the flow. A label's move is run again only when a vertex that
 // may take it, or a neighbour of one, changed label since its last run:
 // otherwise its max-flow problem, and so its answer, would be the same.
-// Deterministic. Returns the final energy.
+//
+// With `threads` > 1, the move of the next label due is computed on another
+// thread beside the current one, from the same labelling. A move reads the
+// labels of the vertices that may take its label and of their neighbours
+// only, so when the current move changes none of those, the next one's
+// answer is the one it would have computed after it, and it is kept;
+// otherwise it is computed again in its turn. The moves, their order and
+// the result are those of one thread, bit for bit. Deterministic. Returns
+// the final energy.
 template <typename MaxFlow>
-double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l)
+double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsigned threads = 1)
 {
   double energy = p.energy(l);
   if(p.vertices == 0 || p.labels < 2)
     return energy;
+  const std::size_t none = std::size_t(-1);
   const double tolerance = 1e-12;
   const Potts_adjacency adjacency(p);
-  std::vector<std::size_t> candidate(p.vertices, std::size_t(-1));
+  std::vector<std::size_t> candidate(p.vertices, none), other_candidate;
+  const bool pairs = threads > 1 && p.labels > 2;
+  if(pairs)
+    other_candidate.assign(p.vertices, none);
   std::vector<char> dirty(p.labels, 1);
   const auto touch = [&](std::size_t v) {
     for(std::size_t i = p.first[v]; i < p.first[v + 1]; ++i)
       dirty[p.label[i]] = 1;
   };
+  const auto may_take = [&](std::size_t v, std::size_t c) {
+    for(std::size_t i = p.first[v]; i < p.first[v + 1]; ++i)
+      if(p.label[i] == c)
+        return true;
+    return false;
+  };
+  // whether the move of label c reads the label of a vertex of `moved`
+  const auto reads = [&](std::size_t c, const std::vector<std::size_t>& moved) {
+    for(const std::size_t v : moved)
+    {
+      if(may_take(v, c))
+        return true;
+      for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
+        if(may_take(adjacency.neighbour[j].first, c))
+          return true;
+    }
+    return false;
+  };
+  // keeps the move of alpha when it lowers the energy; whether it did
+  const auto apply = [&](std::size_t alpha, const std::vector<std::size_t>& taken, double delta) {
+    if(taken.empty() || !(delta < -tolerance * std::abs(energy)))
+      return false;
+    energy += delta;
+    for(const std::size_t v : taken)
+      l[v] = alpha;
+    // the moves of the other labels near the vertices that moved must be
+    // run again; alpha's own cannot improve on itself
+    for(const std::size_t v : taken)
+    {
+      touch(v);
+      for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
+        touch(adjacency.neighbour[j].first);
+    }
+    dirty[alpha] = 0; // touch() marked it too
+    return true;
+  };
   bool improved = true;
   while(improved)
   {
     improved = false;
-    for(std::size_t alpha = 0; alpha < p.labels; ++alpha)
+    for(std::size_t alpha = 0; alpha < p.labels;)
     {
       if(!dirty[alpha])
-        continue;
-      dirty[alpha] = 0;
-      double delta = 0.;
-      const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta);
-      if(taken.empty() || !(delta < -tolerance * std::abs(energy)))
-        continue;
-      energy += delta;
-      for(const std::size_t v : taken)
-        l[v] = alpha;
-      // the moves of the other labels near the vertices that moved must be
-      // run again; alpha's own cannot improve on itself
-      for(const std::size_t v : taken)
       {
-        touch(v);
-        for(std::size_t j = adjacency.offset[v]; j < adjacency.offset[v + 1]; ++j)
-          touch(adjacency.neighbour[j].first);
+        ++alpha;
+        continue;
       }
-      dirty[alpha] = 0; // touch() marked it too
-      improved = true;
+      dirty[alpha] = 0;
+      std::size_t beta = alpha + 1;
+      while(beta < p.labels && !dirty[beta])
+        ++beta;
+      double delta = 0.;
+      if(!pairs || beta == p.labels)
+      {
+        const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta);
+        improved |= apply(alpha, taken, delta);
+        ++alpha;
+        continue;
+      }
+      double beta_delta = 0.;
+      std::future<std::vector<std::size_t>> beta_move = std::async(std::launch::async, [&] {
+        return best_expansion<MaxFlow>(p, adjacency, l, beta, other_candidate, beta_delta);
+      });
+      const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta);
+      const std::vector<std::size_t> beta_taken = beta_move.get();
+      const bool moved = apply(alpha, taken, delta);
+      improved |= moved;
+      // beta is next when no label between became due, and its answer
+      // stands when alpha's move changed nothing it reads
+      std::size_t next = alpha + 1;
+      while(next < beta && !dirty[next])
+        ++next;
+      if(next == beta && !(moved && reads(beta, taken)))
+      {
+        dirty[beta] = 0;
+        improved |= apply(beta, beta_taken, beta_delta);
+        alpha = beta + 1;
+      }
+      else
+        alpha = next;
     }
   }
   return energy;
