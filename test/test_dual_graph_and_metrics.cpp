@@ -355,6 +355,21 @@ TEST_CASE("farthest point sampling spreads samples along a strip", "[sampling]")
   REQUIRE(kept.distance_rows.size() == 5);
   for(std::size_t i = 0; i < 5; ++i)
     CHECK(kept.distance_rows[i] == wg.distances(kept.faces[i]));
+  // the rows are made beside the sampling on the other threads: the same
+  // on any number, every face included (its last samples at distance 0)
+  const Sampling::Farthest_point_samples every = Sampling::farthest_point_samples(wg, n, 7);
+  for(const unsigned threads : {1u, 2u, 4u})
+  {
+    INFO(threads << " threads");
+    std::size_t reports = 0;
+    const Sampling::Farthest_point_samples rows = Sampling::farthest_point_samples(
+      wg, n, keep, Execution(threads, [&reports](const std::string&, double) { return ++reports > 0; }));
+    CHECK(rows.faces == every.faces);
+    CHECK(reports > 0);
+    REQUIRE(rows.distance_rows.size() == n);
+    for(std::size_t i = 0; i < n; ++i)
+      CHECK(rows.distance_rows[i] == wg.distances(rows.faces[i]));
+  }
   // asking for every face returns every face once
   const Sampling::Farthest_point_samples all = Sampling::farthest_point_samples(wg, n);
   std::vector<Dual_graph::size_type> sorted = all.faces;

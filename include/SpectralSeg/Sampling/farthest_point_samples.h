@@ -12,6 +12,10 @@
 #include <SpectralSeg/internal/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <future>
+#include <mutex>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -31,7 +35,8 @@ struct Farthest_point_samples
   std::vector<std::size_t> nearest_sample;
   /// with `Farthest_point_options::keep_distance_rows`: row `i` holds the
   /// distances from `faces[i]` to every face (one Dijkstra run per sample,
-  /// in parallel, after the sampling); empty otherwise
+  /// on the other threads as soon as the sample is chosen, while the
+  /// sampling goes on); empty otherwise
   std::vector<std::vector<double>> distance_rows;
 };
 
@@ -127,34 +132,96 @@ inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& 
   }
   else
     row_b.clear();
-  // Each further sample lowers the distances where it is closer: a Dijkstra
-  // run bounded by them, over the new sample's region only.
-  while(out.faces.size() < count)
+  // With distance rows and several threads, the rows of the samples are
+  // made by other threads as soon as each sample is chosen, while this one
+  // goes on choosing (each row depends on its sample only); this thread
+  // joins them when the samples are chosen.
+  const bool rows = options.keep_distance_rows;
+  if(rows)
   {
-    exec.report("farthest point sampling", double(out.faces.size()) / double(count));
-    const Dual_graph::size_type next = farthest(out.distance);
-    if(out.distance[next] == 0.) // every face is already a sample or at distance 0 of one
-    {
-      for(std::size_t f = 0; f < n && out.faces.size() < count; ++f)
-        if(std::find(out.faces.begin(), out.faces.end(), f) == out.faces.end())
-          out.faces.push_back(static_cast<Dual_graph::size_type>(f));
-      break;
-    }
-    out.faces.push_back(next);
-    graph.add_source(next, out.faces.size() - 1, out.distance, out.nearest_sample);
-  }
-  exec.report("farthest point sampling", 1.);
-  if(options.keep_distance_rows)
-  {
-    // the samples' full rows, in parallel (the diameter ends' are known)
-    out.distance_rows.resize(out.faces.size());
+    out.faces.reserve(count); // read by the other threads: never reallocated
+    out.distance_rows.resize(count);
     out.distance_rows[0] = std::move(row_a);
     if(!row_b.empty())
       out.distance_rows[1] = std::move(row_b);
-    ::SpectralSeg::internal::parallel_for(out.faces.size(), exec, "distance rows", [&](std::size_t i) {
+  }
+  std::atomic<std::size_t> chosen(out.faces.size()), next_row(0);
+  std::atomic<bool> stop(false);
+  std::mutex mutex;
+  std::condition_variable more;
+  // the rows not yet made, in order; waits for a sample not yet chosen
+  // (this thread reports progress, which may throw to cancel)
+  const auto make_rows = [&](bool report) {
+    for(std::size_t i = next_row++; i < count && !stop.load(); i = next_row++)
+    {
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        more.wait(lock, [&] { return chosen.load() > i || stop.load(); });
+      }
+      if(stop.load())
+        return;
       if(out.distance_rows[i].empty())
         out.distance_rows[i] = graph.distances(out.faces[i]);
-    });
+      if(report)
+        exec.report("distance rows", double(i + 1) / double(count));
+    }
+  };
+  const auto publish = [&](std::size_t n, bool last) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      chosen = n;
+      if(last)
+        stop = n < count; // no more samples: the threads waiting for one stop
+    }
+    more.notify_all();
+  };
+  std::vector<std::future<void>> helpers;
+  if(rows)
+    for(unsigned t = 1; t < exec.threads() && t < count; ++t)
+      helpers.push_back(std::async(std::launch::async, make_rows, false));
+  try
+  {
+    // Each further sample lowers the distances where it is closer: a
+    // Dijkstra run bounded by them, over the new sample's region only.
+    while(out.faces.size() < count)
+    {
+      exec.report("farthest point sampling", double(out.faces.size()) / double(count));
+      const Dual_graph::size_type next = farthest(out.distance);
+      if(out.distance[next] == 0.) // every face is already a sample or at distance 0 of one
+      {
+        for(std::size_t f = 0; f < n && out.faces.size() < count; ++f)
+          if(std::find(out.faces.begin(), out.faces.end(), f) == out.faces.end())
+            out.faces.push_back(static_cast<Dual_graph::size_type>(f));
+        break;
+      }
+      out.faces.push_back(next);
+      if(rows)
+        publish(out.faces.size(), false);
+      graph.add_source(next, out.faces.size() - 1, out.distance, out.nearest_sample);
+    }
+    exec.report("farthest point sampling", 1.);
+    if(rows)
+    {
+      publish(out.faces.size(), true);
+      exec.report("distance rows", 0.);
+      make_rows(true);
+      for(auto& h : helpers)
+        h.get();
+      exec.report("distance rows", 1.);
+    }
+  }
+  catch(...)
+  {
+    publish(out.faces.size(), true);
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      stop = true;
+    }
+    more.notify_all();
+    for(auto& h : helpers)
+      if(h.valid())
+        h.wait();
+    throw;
   }
   return out;
 }
