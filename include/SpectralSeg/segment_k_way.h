@@ -312,8 +312,9 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 /// farthest-point samples are nested, so the samples and distance rows of
 /// the largest count serve every candidate. Each candidate's embedding,
 /// K-means, merge and graph-cut data terms (the stages that read its
-/// embedding) run one candidate after the other; with several threads the
-/// candidates' graph-cut moves then run side by side. Without
+/// embedding) run one candidate after the other; with several threads each
+/// candidate's graph-cut moves start on a thread of their own as soon as
+/// its data terms are made, beside the next candidate's stages. Without
 /// `options.keep_embedding_coordinates`, each candidate's embedding is
 /// released as soon as its data terms are made, so that one candidate's
 /// embedding is alive at a time (unless its merge comes after its graph
