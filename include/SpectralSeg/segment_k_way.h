@@ -459,6 +459,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       }
       else
         c.embedding = internal::embed(graph, dimensions, options.kernel, eo, exec);
+      if(i + 1 == specs.size())
+        shared = Embedding::internal::Nystrom_rows(); // no longer needed
       t("embedding");
       internal::kmeans_clusters(specs[i].clusters, options, c, t, exec);
       // the merge and the graph cut's data terms, the last to read the
@@ -490,7 +492,6 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       }
       running.push_back(std::async(std::launch::async, [&refine, &other, i] { refine(i, other); }));
     }
-    shared = Embedding::internal::Nystrom_rows(); // no longer needed
     for(; !running.empty(); running.pop_front())
       running.front().get();
   }

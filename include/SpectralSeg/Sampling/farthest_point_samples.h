@@ -166,12 +166,12 @@ inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& 
         exec.report("distance rows", double(i + 1) / double(count));
     }
   };
-  const auto publish = [&](std::size_t n, bool last) {
+  // wakes the threads waiting for a sample (stop: for good)
+  const auto publish = [&](bool end) {
     {
       std::lock_guard<std::mutex> lock(mutex);
-      chosen = n;
-      if(last)
-        stop = n < count; // no more samples: the threads waiting for one stop
+      chosen = out.faces.size();
+      stop = end;
     }
     more.notify_all();
   };
@@ -196,13 +196,13 @@ inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& 
       }
       out.faces.push_back(next);
       if(rows)
-        publish(out.faces.size(), false);
+        publish(false);
       graph.add_source(next, out.faces.size() - 1, out.distance, out.nearest_sample);
     }
     exec.report("farthest point sampling", 1.);
     if(rows)
     {
-      publish(out.faces.size(), true);
+      publish(false); // every sample is chosen (the loop fills up to `count`)
       exec.report("distance rows", 0.);
       make_rows(true);
       for(auto& h : helpers)
@@ -212,12 +212,7 @@ inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& 
   }
   catch(...)
   {
-    publish(out.faces.size(), true);
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      stop = true;
-    }
-    more.notify_all();
+    publish(true);
     for(auto& h : helpers)
       if(h.valid())
         h.wait();
