@@ -24,7 +24,8 @@
 //                           unsegmentable-roots=0|1 (a component that fails the test is still cut when min-salience
 //                           allows), pairs=N (sample-face pairs tried per piece),
 //                           sequence=distance|harmonic, sequence-scale=S (the harmonic sequence's angle scale),
-//                           chain=R (chain eigenvalue ratio), continuation=X (L threshold below a passed piece)
+//                           chain=R (chain eigenvalue ratio), continuation=X (L threshold below a passed piece),
+//                           contrast=C (a cut's boundary at least C times as concave as its piece; 0: off)
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --labels-dir DIR        each result's labels, METHOD_ID.seg, one per face of the .off file
@@ -421,6 +422,8 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
       so.segmentability.chain_eigenvalue_ratio = std::stod(value);
     else if(key == "continuation")
       so.continuation_threshold = std::stod(value);
+    else if(key == "contrast")
+      so.min_cut_contrast = std::stod(value);
     else if(key == "roots")
       so.min_cut_salience_at_roots = value == "1";
     else

@@ -436,6 +436,81 @@ TEST_CASE("O(1) salience updates equal a recomputation at every position", "[aut
   }
 }
 
+TEST_CASE("the contrast gate: only cuts along a crease that stands out of the piece", "[automatic]")
+{
+  const Shape& s = star();
+  const Mesh_piece piece = s.piece();
+  const std::vector<Mesh_piece::size_type> order =
+    Salient_cut::face_sequence(piece, sequence_weights(s.graph), 0, piece.number_of_faces() - 1).order;
+  const std::vector<double> angles = Refinement::concave_angle_weights(s.graph);
+  // the boundary's mean angle over the piece's, from scratch, at every position
+  double length = 0., sum = 0.;
+  for(Mesh_piece::size_type e = 0; e < piece.edges().size(); ++e)
+  {
+    length += piece.edge_length(e);
+    sum += piece.edge_length(e) * angles[piece.edges()[e].dual_edge];
+  }
+  REQUIRE(sum > 0.);
+  auto contrast = [&](const std::vector<std::uint8_t>& side) {
+    double blength = 0., bsum = 0.;
+    for(Mesh_piece::size_type e = 0; e < piece.edges().size(); ++e)
+      if(side[piece.edges()[e].face[0]] != side[piece.edges()[e].face[1]])
+      {
+        blength += piece.edge_length(e);
+        bsum += piece.edge_length(e) * angles[piece.edges()[e].dual_edge];
+      }
+    return (bsum / blength) / (sum / length);
+  };
+  std::vector<double> at(order.size(), 0.); // at[i]: the first i faces against the others
+  {
+    std::vector<std::uint8_t> side(order.size(), 0);
+    for(std::size_t i = 1; i < order.size(); ++i)
+    {
+      side[order[i - 1]] = 1;
+      at[i] = contrast(side);
+    }
+  }
+  auto search = [&](double min_contrast) {
+    Salience::Thesis_salience salience = Salience::improved_salience();
+    return Salient_cut::salient_cut_search(piece, order, salience, Salience::Projection::structure, true, 0., &angles,
+                                           min_contrast);
+  };
+  const auto free = search(0.);
+  REQUIRE(free.position > 0);
+  // gates between two distinct contrasts (no rounding decides): the middle
+  // one, just above the free cut's, and one above all
+  std::vector<double> sorted(at.begin() + 1, at.end());
+  std::sort(sorted.begin(), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  auto between = [&](double x) { // the middle between x and the next larger contrast
+    const auto it = std::upper_bound(sorted.begin(), sorted.end(), x);
+    return it == sorted.end() ? 2. * x + 1. : 0.5 * (x + *it);
+  };
+  for(double gate : {between(sorted[sorted.size() / 2]), between(at[free.position]), 1e9})
+  {
+    // the most salient position that passes the gate (the first on ties), or none
+    std::size_t expected = 0;
+    for(std::size_t i = 1; i < order.size(); ++i)
+      if(at[i] >= gate && (expected == 0 || free.curve[i - 1] > free.curve[expected - 1]))
+        expected = i;
+    const auto gated = search(gate);
+    INFO("gate " << gate << ": free cut at " << free.position << " (contrast " << at[free.position]
+                 << "), gated cut at " << gated.position);
+    CHECK(gated.position == expected);
+    if(gate > at[free.position])
+      CHECK(gated.position != free.position);
+    CHECK(gated.curve == free.curve); // the gate only chooses among the positions
+    if(gated.position > 0)
+      CHECK(contrast(gated.side) >= gate);
+  }
+  // one angle per dual edge, or an error
+  const std::vector<double> few(3, 0.);
+  Salience::Thesis_salience salience = Salience::improved_salience();
+  CHECK_THROWS_AS(Salient_cut::salient_cut_search(piece, order, salience, Salience::Projection::structure, false, 0.,
+                                                  &few, 4.),
+                  Invalid_input);
+}
+
 TEST_CASE("our terms: saturating size, the cut loop's area and the curve's covariance, updated in O(1)", "[automatic]")
 {
   const Shape& s = star();

@@ -48,8 +48,11 @@ namespace SpectralSeg {
 /// component, no cut less salient than 0.5 (`min_cut_salience`), which
 /// stops the M test's cuts across a torso; the pieces of a piece that
 /// passed an L test pass with an L score above \f$\eta / 2\f$
-/// (`continuation_threshold`), so that a body keeps losing its limbs; no
-/// part under 2% of its component; at most 64 parts.
+/// (`continuation_threshold`), so that a body keeps losing its limbs; only
+/// cuts along a crease four times as concave as their piece's mean
+/// (`min_cut_contrast`), chosen among the sequences of three sample pairs
+/// (`sample_pairs`), so that smooth tubes and creased surfaces are not
+/// sliced; no part under 2% of its component; at most 64 parts.
 /// \tparam SalienceModel a model of `Salience`
 template <typename SalienceModel = Salience::Thesis_salience>
 struct Automatic_segmentation_options
@@ -100,10 +103,25 @@ struct Automatic_segmentation_options
   /// a teddy bear's body with an arm and two legs scores 0.085 against
   /// \f$\eta = 0.1\f$. The default is \f$\eta / 2\f$.
   double continuation_threshold = 0.05;
+  /// a cut must run along a crease that stands out of the piece (our
+  /// addition; 0: any position is a candidate, the thesis): positions whose
+  /// boundary has a mean boundary weight (each edge weighted by its length)
+  /// below this multiple of the piece's mean are not candidates. The
+  /// weights are the default boundary term's (`Salience::Boundary_strength_term::edge_weight()`)
+  /// of the concave angles at the contrast merge's reference resolution
+  /// (`Refinement::concave_angle_weights()`), so that a finer copy of the
+  /// same surface is judged alike. Parts meet along creases that are deeper
+  /// than the surface around them: across a smooth tube no cut does, and on
+  /// a creased surface (curls of hair) a cut along one more crease is not a
+  /// part boundary either. 4, the contrast merge's limit
+  /// (`Hybrid_options::min_boundary_contrast`)
+  double min_cut_contrast = 4.;
   /// how many pairs of sample faces are tried on each piece, the most
-  /// salient of their cuts kept (`Segmentability::bending_sample_face_pairs()`;
-  /// 1: the thesis's single pair)
-  std::size_t sample_pairs = 1;
+  /// salient of their cuts kept (`Segmentability::bending_sample_face_pairs()`:
+  /// one pair per protrusion the contour shows; 1: the thesis's single
+  /// pair). With `min_cut_contrast`, one sequence may hold no cut along a
+  /// crease while another does: default 3
+  std::size_t sample_pairs = 3;
   /// how the faces between two samples are put in sequence (each prefix a
   /// candidate cut)
   enum class Sequence
@@ -149,6 +167,8 @@ struct Automatic_segmentation_options
     o.min_cut_salience = 0.;
     o.cut_unsegmentable_roots = false;
     o.continuation_threshold = 0.;
+    o.min_cut_contrast = 0.;
+    o.sample_pairs = 1;
     o.sequence = Sequence::distance_difference;
     return o;
   }
@@ -198,8 +218,10 @@ inline std::vector<double> sequence_weights(const Dual_graph& graph, const Execu
 ///    by a concavity-aware harmonic field (`options.sequence`; the thesis's
 ///    `Salient_cut::face_sequence()` orders them on the graph weighted by
 ///    `weights`);
-/// 3. `Salient_cut::salient_cut_search()` finds the most salient prefix,
-///    with the salience weights of the projection that passed; below a
+/// 3. `Salient_cut::salient_cut_search()` finds the most salient prefix
+///    among those whose boundary is `options.min_cut_contrast` times as
+///    concave as the piece, with the salience weights of the projection
+///    that passed; below a
 ///    component's first cut, a cut under `options.min_cut_salience` leaves
 ///    the piece a final part;
 /// 4. `Refinement::enhance_cut_boundary()` smooths the cut and makes each
@@ -215,8 +237,9 @@ inline std::vector<double> sequence_weights(const Dual_graph& graph, const Execu
 /// \param options thresholds, modes and the salience model
 /// \param exec threads (the two Dijkstra runs of each sequence) and progress
 ///        (stage "automatic segmentation": the fraction of the area settled)
-/// \throws Invalid_input if `weights` does not have one valid value per dual edge, or
-///         `options.sequence_angle_scale` is not a positive number
+/// \throws Invalid_input if `weights` does not have one valid value per dual edge,
+///         `options.sequence_angle_scale` is not a positive number or
+///         `options.min_cut_contrast` is negative or not finite
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename SalienceModel>
 Automatic_segmentation_result segment_automatically(const Dual_graph& graph, const std::vector<double>& weights,
@@ -228,6 +251,8 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
   if(options.sequence == Options::Sequence::concave_harmonic &&
      (!(options.sequence_angle_scale > 0.) || !std::isfinite(options.sequence_angle_scale)))
     throw Invalid_input("automatic segmentation: the sequence angle scale must be a positive number");
+  if(!(options.min_cut_contrast >= 0.) || !std::isfinite(options.min_cut_contrast))
+    throw Invalid_input("automatic segmentation: the minimum cut contrast must be finite and non-negative");
   Automatic_segmentation_result r;
   internal::Stage_timer lap(r.timings, true);
   const std::size_t n = graph.number_of_faces();
@@ -241,6 +266,22 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
   if(geometry)
     curvatures = Segmentability::principal_curvatures(graph);
   lap("curvatures");
+  // the weights of the cuts' contrast: the boundary term's mapping of the
+  // concave angles at the contrast merge's reference resolution
+  std::vector<double> contrast_weights;
+  if(options.min_cut_contrast > 0.)
+  {
+    contrast_weights = Refinement::concave_angle_weights(graph, SpectralSeg::internal::default_reference_faces);
+    const Salience::Boundary_strength_term boundary;
+    for(Dual_graph::size_type d = 0; d < contrast_weights.size(); ++d)
+    {
+      Dual_graph::Edge e = graph.edge(d);
+      e.concave = contrast_weights[d] > 0.;
+      e.normal_angle = contrast_weights[d];
+      contrast_weights[d] = boundary.edge_weight(e);
+    }
+  }
+  lap("contrast weights");
 
   // one root per connected component
   h.roots.clear();
@@ -373,7 +414,8 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
                                                                                    st.second, exec);
       lap("face sequence");
       Salient_cut::Salient_cut c =
-        Salient_cut::salient_cut_search(piece, seq.order, salience, test.projection_kind(), false, min_area);
+        Salient_cut::salient_cut_search(piece, seq.order, salience, test.projection_kind(), false, min_area,
+                                        &contrast_weights, options.min_cut_contrast);
       lap("cut search");
       if(c.position != 0 && (cut.position == 0 || c.salience > cut.salience))
       {

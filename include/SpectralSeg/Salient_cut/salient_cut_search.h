@@ -49,13 +49,20 @@ struct Salient_cut
 /// \param keep_curve whether to return the salience of every position
 /// \param min_side_area positions where the smaller side's area is below
 ///        this are not candidates (0: every position is, as in the thesis)
+/// \param concave_angles with `min_contrast`: one concave angle per dual
+///        edge of the piece's graph (e.g. `Refinement::concave_angle_weights()`)
+/// \param min_contrast positions whose boundary's mean concave angle (each
+///        edge weighted by its length) is below this multiple of the
+///        piece's mean are not candidates (0: every position is, as in the
+///        thesis)
 /// \return the best cut; `position` is 0 if no position was a candidate
 /// \throws Invalid_input if `order` is not a permutation of the piece's faces
 ///         or the piece has fewer than 2 faces
 template <typename SalienceModel>
 Salient_cut salient_cut_search(const Mesh_piece& piece, const std::vector<Mesh_piece::size_type>& order,
                                SalienceModel& salience, Salience::Projection projection, bool keep_curve = false,
-                               double min_side_area = 0.)
+                               double min_side_area = 0., const std::vector<double>* concave_angles = nullptr,
+                               double min_contrast = 0.)
 {
   const std::size_t n = piece.number_of_faces();
   if(n < 2)
@@ -70,6 +77,22 @@ Salient_cut salient_cut_search(const Mesh_piece& piece, const std::vector<Mesh_p
     in_prefix[f] = 1;
   }
   std::fill(in_prefix.begin(), in_prefix.end(), 0);
+  // the concave contrast: the boundary's length and summed angle against
+  // the piece's mean angle
+  const bool contrast = min_contrast > 0. && concave_angles;
+  if(contrast && concave_angles->size() != piece.graph().number_of_edges())
+    throw Invalid_input("salient_cut_search: expected one concave angle per dual edge");
+  double mean_angle = 0., boundary_length = 0., boundary_angle = 0.;
+  if(contrast)
+  {
+    double length = 0.;
+    for(Mesh_piece::size_type e = 0; e < piece.edges().size(); ++e)
+    {
+      length += piece.edge_length(e);
+      mean_angle += piece.edge_length(e) * (*concave_angles)[piece.edges()[e].dual_edge];
+    }
+    mean_angle = length > 0. ? mean_angle / length : 0.;
+  }
   std::vector<std::uint32_t> vertex_edges(piece.number_of_vertices(), 0);
 
   salience.start(piece);
@@ -93,6 +116,11 @@ Salient_cut salient_cut_search(const Mesh_piece& piece, const std::vector<Mesh_p
       {
         salience.remove_boundary_edge(nb->edge);
         --state.boundary_edges;
+        if(contrast)
+        {
+          boundary_length -= piece.edge_length(nb->edge);
+          boundary_angle -= piece.edge_length(nb->edge) * (*concave_angles)[e.dual_edge];
+        }
         for(Mesh_piece::size_type v : e.vertex)
           if(--vertex_edges[v] == 0)
             salience.remove_boundary_vertex(v);
@@ -101,6 +129,11 @@ Salient_cut salient_cut_search(const Mesh_piece& piece, const std::vector<Mesh_p
       {
         salience.add_boundary_edge(nb->edge);
         ++state.boundary_edges;
+        if(contrast)
+        {
+          boundary_length += piece.edge_length(nb->edge);
+          boundary_angle += piece.edge_length(nb->edge) * (*concave_angles)[e.dual_edge];
+        }
         for(Mesh_piece::size_type v : e.vertex)
           if(vertex_edges[v]++ == 0)
             salience.add_boundary_vertex(v);
@@ -109,7 +142,8 @@ Salient_cut salient_cut_search(const Mesh_piece& piece, const std::vector<Mesh_p
     const double s = salience.value(state, projection);
     if(keep_curve)
       best.curve.push_back(s);
-    if(s > best.salience && state.smaller_area() >= min_side_area)
+    if(s > best.salience && state.smaller_area() >= min_side_area &&
+       (!contrast || boundary_angle >= min_contrast * mean_angle * boundary_length))
     {
       best.salience = s;
       best.position = i + 1;
