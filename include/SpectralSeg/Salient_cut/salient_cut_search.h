@@ -49,12 +49,13 @@ struct Salient_cut
 /// \param keep_curve whether to return the salience of every position
 /// \param min_side_area positions where the smaller side's area is below
 ///        this are not candidates (0: every position is, as in the thesis)
-/// \param concave_angles with `min_contrast`: one concave angle per dual
-///        edge of the piece's graph (e.g. `Refinement::concave_angle_weights()`)
-/// \param min_contrast positions whose boundary's mean concave angle (each
-///        edge weighted by its length) is below this multiple of the
-///        piece's mean are not candidates (0: every position is, as in the
-///        thesis)
+/// \param concave_angles with `min_contrast`: one concavity weight per dual
+///        edge of the piece's graph, e.g. `Refinement::concave_angle_weights()`
+///        (`segment_automatically()` passes those angles mapped by the
+///        boundary term, `Salience::Boundary_strength_term::edge_weight()`)
+/// \param min_contrast positions whose boundary's mean weight (each edge
+///        weighted by its length) is below this multiple of the piece's
+///        mean are not candidates (0: every position is, as in the thesis)
 /// \return the best cut; `position` is 0 if no position was a candidate
 /// \throws Invalid_input if `order` is not a permutation of the piece's faces
 ///         or the piece has fewer than 2 faces
