@@ -29,13 +29,18 @@ if ! grep -q "SpectralSeg: CGAL 6\." <<<"$found"; then
   echo "test_cgal6: the build did not find CGAL 6 at $CGAL6" >&2
   exit 1
 fi
-# the tool (one long translation unit) and the headers side by side
-# the tool and the header check side by side (given several --target,
-# CMake's Makefiles build one target after the other: the tool's single
-# translation unit would leave a core idle for minutes)
+# The tool and the header check are built side by side (given several
+# --target, CMake's Makefiles build one target after the other, and the
+# tool's two long translation units would leave a core idle for minutes).
+# As soon as the tool is built, its tests and the install test (a build of
+# its own, mostly on one core) run beside the rest of the header check.
 cmake --build "$BUILD_DIR" --target spectralseg -j "$JOBS" &
 tool=$!
-cmake --build "$BUILD_DIR" --target spectralseg_header_self_containment -j "$JOBS"
+cmake --build "$BUILD_DIR" --target spectralseg_header_self_containment -j "$JOBS" &
+headers=$!
 wait "$tool"
-cd "$BUILD_DIR"
-ctest --output-on-failure -j 2 -R '^(header_self_containment|cli_tests|install_consumer)$'
+(cd "$BUILD_DIR" && ctest --output-on-failure -j 2 -R '^(cli_tests|install_consumer)$') &
+tests=$!
+wait "$headers"
+(cd "$BUILD_DIR" && ctest --output-on-failure -R '^header_self_containment$')
+wait "$tests"

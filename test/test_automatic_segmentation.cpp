@@ -70,7 +70,7 @@ test_meshes::Soup body()
   return test_meshes::voxel_union(cells, 2, part);
 }
 
-const Shape& star()
+const Shape& star_shape()
 {
   static const Shape s(test_meshes::star(2));
   return s;
@@ -185,7 +185,7 @@ TEST_CASE("the re-embedded contours are not tested on a chain", "[automatic]")
   for(int x = 0; x < 10; ++x)
     cells.push_back({x, 0, 0});
   const Shape bar(test_meshes::voxel_union(cells, 3));
-  const Shape& branching = star();
+  const Shape& branching = star_shape();
   const auto ratio = [](const Shape& s) {
     const auto p = Segmentability::spectral_projection(s.piece(), Salience::Projection::structure, &s.curvatures);
     return p.eigenvalues(1) / p.eigenvalues(0);
@@ -212,7 +212,7 @@ TEST_CASE("the re-embedded contours are not tested on a chain", "[automatic]")
 
 TEST_CASE("below a piece that passed an L test, an L contour passes at the continuation threshold", "[automatic]")
 {
-  const Shape& s = star();
+  const Shape& s = star_shape();
   const Mesh_piece piece = s.piece();
   const auto passed = Segmentability::test_segmentability(piece, &s.curvatures);
   REQUIRE(passed.segmentable);
@@ -248,7 +248,7 @@ TEST_CASE("below a piece that passed an L test, an L contour passes at the conti
 
 TEST_CASE("bending samples land on two different limbs of the star", "[automatic]")
 {
-  const Shape& s = star();
+  const Shape& s = star_shape();
   const Mesh_piece piece = s.piece();
   const auto r = Segmentability::test_segmentability(piece, &s.curvatures);
   REQUIRE(r.segmentable);
@@ -402,7 +402,7 @@ TEST_CASE("an elimination order inherited from the whole serves a piece as its o
 
 TEST_CASE("O(1) salience updates equal a recomputation at every position", "[automatic]")
 {
-  const Shape& s = star();
+  const Shape& s = star_shape();
   const Mesh_piece piece = s.piece();
   std::mt19937 rng(7);
   std::vector<std::vector<Mesh_piece::size_type>> orders;
@@ -438,7 +438,7 @@ TEST_CASE("O(1) salience updates equal a recomputation at every position", "[aut
 
 TEST_CASE("the contrast gate: only cuts along a crease that stands out of the piece", "[automatic]")
 {
-  const Shape& s = star();
+  const Shape& s = star_shape();
   const Mesh_piece piece = s.piece();
   const std::vector<Mesh_piece::size_type> order =
     Salient_cut::face_sequence(piece, sequence_weights(s.graph), 0, piece.number_of_faces() - 1).order;
@@ -513,7 +513,7 @@ TEST_CASE("the contrast gate: only cuts along a crease that stands out of the pi
 
 TEST_CASE("our terms: saturating size, the cut loop's area and the curve's covariance, updated in O(1)", "[automatic]")
 {
-  const Shape& s = star();
+  const Shape& s = star_shape();
   const Mesh_piece piece = s.piece();
   const auto order = Salient_cut::face_sequence(piece, sequence_weights(s.graph), 0, piece.number_of_faces() - 1).order;
   using Salience::Protrusion_term;
@@ -618,7 +618,7 @@ TEST_CASE("closing removes a one-face notch from a straight cut", "[automatic]")
 
 TEST_CASE("automatic segmentation of the star: parts, hierarchy, threads", "[automatic]")
 {
-  const Shape& s = star();
+  const Shape& s = star_shape();
   const std::vector<double> w = sequence_weights(s.graph);
   Automatic_segmentation_options<> options;
   const Automatic_segmentation_result r = segment_automatically(s.graph, w, options, Execution(1));

@@ -14,6 +14,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "test_meshes.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,14 +30,14 @@ namespace {
 
 using namespace SpectralSeg::Segmentability;
 using SpectralSeg::Invalid_input;
-typedef std::vector<Eigen::Vector2d> Points;
-typedef std::vector<std::array<std::uint32_t, 3>> Triangles;
-const double pi = 3.14159265358979323846;
+typedef std::vector<Eigen::Vector2d> Plane_points;
+typedef std::vector<std::array<std::uint32_t, 3>> Plane_triangles;
+using test_meshes::pi;
 
 struct Mesh_2
 {
-  Points points;
-  Triangles triangles;
+  Plane_points points;
+  Plane_triangles triangles;
 };
 
 // The unit cells (i, j) of a grid for which `keep` is true, each split into
@@ -148,8 +150,8 @@ bool contains_point(const Contour& c, const Eigen::Vector2d& p)
 
 TEST_CASE("the contour of two triangles is counter-clockwise and fits their box", "[segmentability]")
 {
-  const Points points{{0., 0.}, {2., 0.}, {2., 1.}, {0., 1.}};
-  const Triangles triangles{{{0, 1, 2}}, {{0, 2, 3}}};
+  const Plane_points points{{0., 0.}, {2., 0.}, {2., 1.}, {0., 1.}};
+  const Plane_triangles triangles{{{0, 1, 2}}, {{0, 2, 3}}};
   const Contour c = trace_outer_contour(points, triangles, 200);
   REQUIRE(c.size() > 100);
   CHECK(signed_area(c) > 0.);
@@ -205,7 +207,7 @@ TEST_CASE("thin triangles are drawn and keep a mesh connected", "[segmentability
   CHECK(lo < 0.5); // all needles in one region
   CHECK(hi > needles - 0.5);
   // degenerate triangles (segments) are drawn too
-  const Points segment{{0., 0.}, {1., 1.}};
+  const Plane_points segment{{0., 0.}, {1., 1.}};
   const Contour diagonal = trace_outer_contour(segment, {{{0, 1, 1}}}, 50);
   CHECK(diagonal.size() > 40);
 }

@@ -39,7 +39,7 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 using namespace SpectralSeg;
-const double pi = 3.14159265358979323846;
+using test_meshes::pi;
 } // namespace
 
 TEST_CASE("dual graph of a strip: nodes, edges, border, degrees", "[dual_graph]")

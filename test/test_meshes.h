@@ -16,6 +16,8 @@
 
 namespace test_meshes {
 
+constexpr double pi = 3.14159265358979323846;
+
 struct Soup
 {
   std::vector<std::array<double, 3>> points;

@@ -140,7 +140,10 @@ private:
   {
     std::vector<int> labels(number_of_faces, -1);
     int next = 0;
-    std::vector<std::size_t> stack(roots.rbegin(), roots.rend());
+    // (built forward and reversed: g++ 12 warns, wrongly, about freeing a
+    // vector made from reverse iterators, -Wfree-nonheap-object)
+    std::vector<std::size_t> stack(roots);
+    std::reverse(stack.begin(), stack.end());
     while(!stack.empty())
     {
       const std::size_t i = stack.back();
