@@ -21,11 +21,7 @@ fi
 CGAL6=$(cd "$CGAL6" && pwd)
 BUILD_DIR=${BUILD_DIR:-build-cgal6}
 JOBS=${JOBS:-$(nproc)}
-# CMAKE_UNITY_BUILD: the tool's two sources as one translation unit (most of
-# each one's compile time instantiates the same library code; the header
-# check keeps one header per unit)
 found=$(cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCGAL_DIR="$CGAL6/lib/cmake/CGAL" -DCGAL_WITH_GMPXX=OFF \
-  -DCMAKE_UNITY_BUILD=ON \
   -DSPECTRALSEG_BUILD_BENCHMARKS=OFF -DSPECTRALSEG_BUILD_EXAMPLES=OFF -DSPECTRALSEG_BUILD_PYTHON=OFF \
   -DSPECTRALSEG_BUILD_DOCS=OFF | grep "SpectralSeg: CGAL" || true)
 echo "$found"
