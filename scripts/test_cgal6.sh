@@ -34,6 +34,8 @@ fi
 # tool's two long translation units would leave a core idle for minutes).
 # As soon as the tool is built, its tests and the install test (a build of
 # its own, mostly on one core) run beside the rest of the header check.
+# a failure stops the script: the builds and tests still running go with it
+trap 'kill $(jobs -p) 2>/dev/null || true' EXIT
 cmake --build "$BUILD_DIR" --target spectralseg -j "$JOBS" &
 tool=$!
 cmake --build "$BUILD_DIR" --target spectralseg_header_self_containment -j "$JOBS" &
