@@ -10,7 +10,9 @@ bash scripts/setup.sh --tool
 # (its own build folder: scripts/build.sh and scripts/test.sh configure
 # ./build with every target)
 BUILD_DIR=${BUILD_DIR:-build-demo}
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSPECTRALSEG_BUILD_TESTS=OFF -DSPECTRALSEG_BUILD_EXAMPLES=OFF \
+GENERATOR=()   # Ninja for a new folder, as in scripts/build.sh
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ] && command -v ninja >/dev/null; then GENERATOR=(-G Ninja); fi
+cmake -S . -B "$BUILD_DIR" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=Release -DSPECTRALSEG_BUILD_TESTS=OFF -DSPECTRALSEG_BUILD_EXAMPLES=OFF \
   -DSPECTRALSEG_BUILD_BENCHMARKS=OFF -DSPECTRALSEG_BUILD_PYTHON=OFF -DSPECTRALSEG_BUILD_DOCS=OFF >/dev/null
 cmake --build "$BUILD_DIR" --target spectralseg -j "$(nproc)"
 OUT=${OUT:-output}

@@ -12,14 +12,14 @@ set -euo pipefail
 # Boost Graph Library is headers only here: libboost-graph-dev would add
 # ICU, regex, serialization and test) -- 195 packages, 148 MB
 TOOL_PACKAGES=(
-  g++ make cmake
+  g++ make cmake ninja-build
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libeigen3-dev libspectra-dev
   libtbb-dev libembree-dev
   libcli11-dev nlohmann-json3-dev libpng-dev
 )
 PACKAGES=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libcgal-dev libgmp-dev libmpfr-dev
   libeigen3-dev libspectra-dev
   libboost-dev libboost-program-options-dev

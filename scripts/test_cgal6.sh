@@ -21,7 +21,9 @@ fi
 CGAL6=$(cd "$CGAL6" && pwd)
 BUILD_DIR=${BUILD_DIR:-build-cgal6}
 JOBS=${JOBS:-$(nproc)}
-found=$(cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCGAL_DIR="$CGAL6/lib/cmake/CGAL" -DCGAL_WITH_GMPXX=OFF \
+GENERATOR=()   # Ninja for a new folder, as in scripts/build.sh
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ] && command -v ninja >/dev/null; then GENERATOR=(-G Ninja); fi
+found=$(cmake -S . -B "$BUILD_DIR" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=Release -DCGAL_DIR="$CGAL6/lib/cmake/CGAL" -DCGAL_WITH_GMPXX=OFF \
   -DSPECTRALSEG_BUILD_BENCHMARKS=OFF -DSPECTRALSEG_BUILD_EXAMPLES=OFF -DSPECTRALSEG_BUILD_PYTHON=OFF \
   -DSPECTRALSEG_BUILD_DOCS=OFF | grep "SpectralSeg: CGAL" || true)
 echo "$found"
@@ -29,20 +31,14 @@ if ! grep -q "SpectralSeg: CGAL 6\." <<<"$found"; then
   echo "test_cgal6: the build did not find CGAL 6 at $CGAL6" >&2
   exit 1
 fi
-# The tool and the header check are built side by side (given several
-# --target, CMake's Makefiles build one target after the other, and the
-# tool's two long translation units would leave a core idle for minutes).
-# As soon as the tool is built, its tests and the install test (a build of
-# its own, mostly on one core) run beside the rest of the header check.
+# The tool first (its library source and its two translation units keep
+# both cores busy), then its tests and the install test (a build of its
+# own, mostly on one core) beside the header check. One build command at a
+# time: two in the same folder would build the library they share twice.
 # a failure stops the script: the builds and tests still running go with it
 trap 'kill $(jobs -p) 2>/dev/null || true' EXIT
-cmake --build "$BUILD_DIR" --target spectralseg -j "$JOBS" &
-tool=$!
-cmake --build "$BUILD_DIR" --target spectralseg_header_self_containment -j "$JOBS" &
-headers=$!
-wait "$tool"
+cmake --build "$BUILD_DIR" --target spectralseg -j "$JOBS"
 (cd "$BUILD_DIR" && ctest --output-on-failure -j 2 -R '^(cli_tests|install_consumer)$') &
 tests=$!
-wait "$headers"
 (cd "$BUILD_DIR" && ctest --output-on-failure -R '^header_self_containment$')
 wait "$tests"

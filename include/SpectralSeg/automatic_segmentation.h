@@ -22,6 +22,7 @@
 #include <SpectralSeg/k_way_segmentation.h>
 #include <SpectralSeg/named_parameters.h>
 #include <SpectralSeg/segment_hybrid.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <future>
 #include <limits>
@@ -195,10 +196,14 @@ struct Automatic_segmentation_result
 /// volumetric term (\f$\alpha = 0.01\f$, \f$\beta = 0.195\f$, each
 /// normalised by its maximum), since pieces cut open have no enclosed
 /// volume (thesis 6.3).
-inline std::vector<double> sequence_weights(const Dual_graph& graph, const Execution& exec = Execution())
+SPECTRALSEG_INLINE std::vector<double> sequence_weights(const Dual_graph& graph, const Execution& exec = Execution())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return Metrics::make_blend(Metrics::Geodesic_weight(), 0.01, Metrics::Angular_weight(), 0.195)(graph, exec);
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegAutomatic
 /// \brief Segments the faces of a dual graph by recursive two-way cuts

@@ -6,6 +6,7 @@
 #define SPECTRALSEG_CHOOSE_NUMBER_OF_SEGMENTS_H
 
 #include <SpectralSeg/Embedding/Spectral_embedding.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -24,8 +25,9 @@ namespace SpectralSeg {
 /// first, and clamps the result to \f$[2, k_{max}]\f$ (our rule; the
 /// thesis takes k from the user). `segment_k_way_automatic()` does not use
 /// it (doc/benchmarks.md compares the two).
-inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding& e, std::size_t max_k,
-                                             double threshold = 0.3)
+SPECTRALSEG_INLINE std::size_t choose_number_of_segments(const Embedding::Spectral_embedding& e, std::size_t max_k,
+                                                         double threshold = 0.3)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::size_t count = 0;
   const double lambda2 = e.eigenvalues.size() > 0 ? e.eigenvalues(0) : 0.;
@@ -34,6 +36,9 @@ inline std::size_t choose_number_of_segments(const Embedding::Spectral_embedding
       ++count;
   return std::max<std::size_t>(2, std::min(max_k, count + 1));
 }
+#else
+;
+#endif
 
 } // namespace SpectralSeg
 

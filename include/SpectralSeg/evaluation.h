@@ -12,6 +12,7 @@
 #include <SpectralSeg/Evaluation/label_files.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -37,7 +38,8 @@ struct Compact_labels
   std::uint32_t count = 0;          // number of distinct labels
 };
 
-inline Compact_labels compact(const std::vector<int>& labels)
+SPECTRALSEG_INLINE Compact_labels compact(const std::vector<int>& labels)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Compact_labels c;
   c.index.resize(labels.size());
@@ -52,6 +54,9 @@ inline Compact_labels compact(const std::vector<int>& labels)
   }
   return c;
 }
+#else
+;
+#endif
 
 // The contingency table of two labellings: one cell per pair of labels that
 // share at least one face, with the number of those faces and their total
@@ -73,7 +78,8 @@ struct Contingency_table
   double total_weight = 0.;
 };
 
-inline void check_labellings(const std::vector<int>& a, const std::vector<int>& b, const char* what)
+SPECTRALSEG_INLINE void check_labellings(const std::vector<int>& a, const std::vector<int>& b, const char* what)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(a.empty() || b.empty())
     throw Invalid_input(std::string(what) + ": empty labelling");
@@ -81,8 +87,12 @@ inline void check_labellings(const std::vector<int>& a, const std::vector<int>& 
     throw Invalid_input(std::string(what) + ": the labellings have different sizes (" + std::to_string(a.size()) +
                         " and " + std::to_string(b.size()) + " faces)");
 }
+#else
+;
+#endif
 
-inline void check_weights(const std::vector<double>& w, std::size_t n, const char* what)
+SPECTRALSEG_INLINE void check_weights(const std::vector<double>& w, std::size_t n, const char* what)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(w.size() != n)
     throw Invalid_input(std::string(what) + ": " + std::to_string(w.size()) + " face areas given for " +
@@ -98,11 +108,15 @@ inline void check_weights(const std::vector<double>& w, std::size_t n, const cha
   if(!(total > 0.))
     throw Invalid_input(std::string(what) + ": the faces have a total area of zero");
 }
+#else
+;
+#endif
 
 // O(n + number of cells), expected (hashing of the labels); `weights` may be
 // null (unit weights).
-inline Contingency_table contingency_table(const std::vector<int>& a, const std::vector<int>& b,
-                                           const std::vector<double>* weights)
+SPECTRALSEG_INLINE Contingency_table contingency_table(const std::vector<int>& a, const std::vector<int>& b,
+                                                       const std::vector<double>* weights)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = a.size();
   const Compact_labels ca = compact(a), cb = compact(b);
@@ -148,10 +162,14 @@ inline Contingency_table contingency_table(const std::vector<int>& a, const std:
     t.total_weight += w;
   return t;
 }
+#else
+;
+#endif
 
 inline std::uint64_t pairs(std::uint64_t n) { return n < 2 ? 0 : (n % 2 == 0 ? (n / 2) * (n - 1) : n * ((n - 1) / 2)); }
 
-inline double rand_index_error(const Contingency_table& t)
+SPECTRALSEG_INLINE double rand_index_error(const Contingency_table& t)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::uint64_t all = pairs(t.faces);
   if(all == 0)
@@ -168,13 +186,17 @@ inline double rand_index_error(const Contingency_table& t)
   const std::uint64_t disagree = (same_a - same_both) + (same_b - same_both);
   return static_cast<double>(disagree) / static_cast<double>(all);
 }
+#else
+;
+#endif
 
 struct Consistency_errors
 {
   double global, local;
 };
 
-inline Consistency_errors consistency_errors(const Contingency_table& t)
+SPECTRALSEG_INLINE Consistency_errors consistency_errors(const Contingency_table& t)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   // A face f of cell (i, j) has E(S1,S2,f) = (r_i - w_ij) / r_i and
   // E(S2,S1,f) = (c_j - w_ij) / c_j, so each sum over faces is a sum over cells.
@@ -191,11 +213,15 @@ inline Consistency_errors consistency_errors(const Contingency_table& t)
   }
   return {std::min(e12, e21) / t.total_weight, local / t.total_weight};
 }
+#else
+;
+#endif
 
 // sum over the columns of (column weight - its largest cell): the weight of
 // each region of the second labelling outside its best-matching region of
 // the first, i.e. D_H(S1 => S2) of the benchmark
-inline double directional_hamming(const Contingency_table& t, bool over_columns)
+SPECTRALSEG_INLINE double directional_hamming(const Contingency_table& t, bool over_columns)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<double> best(over_columns ? t.column_weight.size() : t.row_weight.size(), 0.);
   for(const Contingency_table::Cell& c : t.cells)
@@ -209,8 +235,12 @@ inline double directional_hamming(const Contingency_table& t, bool over_columns)
     d += std::max(0., total[i] - best[i]);
   return d;
 }
+#else
+;
+#endif
 
-inline void check_graph_labels(const Dual_graph& graph, const std::vector<int>& labels, const char* what)
+SPECTRALSEG_INLINE void check_graph_labels(const Dual_graph& graph, const std::vector<int>& labels, const char* what)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(labels.empty())
     throw Invalid_input(std::string(what) + ": empty labelling");
@@ -218,9 +248,13 @@ inline void check_graph_labels(const Dual_graph& graph, const std::vector<int>& 
     throw Invalid_input(std::string(what) + ": " + std::to_string(labels.size()) + " labels for a mesh of " +
                         std::to_string(graph.number_of_faces()) + " faces");
 }
+#else
+;
+#endif
 
 // the faces with at least one neighbour of another label
-inline std::vector<Dual_graph::size_type> boundary_faces(const Dual_graph& graph, const std::vector<int>& labels)
+SPECTRALSEG_INLINE std::vector<Dual_graph::size_type> boundary_faces(const Dual_graph& graph, const std::vector<int>& labels)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<Dual_graph::size_type> out;
   for(Dual_graph::size_type f = 0; f < graph.number_of_faces(); ++f)
@@ -234,9 +268,13 @@ inline std::vector<Dual_graph::size_type> boundary_faces(const Dual_graph& graph
   }
   return out;
 }
+#else
+;
+#endif
 
 // area-weighted mean distance of the face centroids to the area-weighted centroid
-inline double average_radius(const Mesh_geometry& geometry)
+SPECTRALSEG_INLINE double average_radius(const Mesh_geometry& geometry)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   double area = 0.;
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
@@ -253,14 +291,21 @@ inline double average_radius(const Mesh_geometry& geometry)
     radius += geometry.areas[f] * (geometry.centroids[f] - center).norm();
   return radius / area;
 }
+#else
+;
+#endif
 
-inline std::vector<double> geodesic_weights(const Dual_graph& graph)
+SPECTRALSEG_INLINE std::vector<double> geodesic_weights(const Dual_graph& graph)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<double> w(graph.number_of_edges());
   for(Dual_graph::size_type e = 0; e < graph.number_of_edges(); ++e)
     w[e] = graph.edge(e).geodesic_length;
   return w;
 }
+#else
+;
+#endif
 
 // The boundary faces of one labelling and the dual-graph geodesic distance
 // of every face to the nearest of them (empty if there is no boundary).
@@ -270,7 +315,8 @@ struct Cut_boundary
   std::vector<double> distance;
 };
 
-inline Cut_boundary cut_boundary(const Weighted_dual_graph& graph, const std::vector<int>& labels)
+SPECTRALSEG_INLINE Cut_boundary cut_boundary(const Weighted_dual_graph& graph, const std::vector<int>& labels)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Cut_boundary b;
   b.faces = boundary_faces(graph.graph(), labels);
@@ -278,11 +324,15 @@ inline Cut_boundary cut_boundary(const Weighted_dual_graph& graph, const std::ve
     b.distance = graph.distances(b.faces).distance;
   return b;
 }
+#else
+;
+#endif
 
 // mean distance from the boundary faces of `from` to the boundary of `to`;
 // faces that reach no boundary face of `to` (another connected component)
 // are left out; NaN if none is left
-inline double mean_cut_distance(const Cut_boundary& from, const Cut_boundary& to)
+SPECTRALSEG_INLINE double mean_cut_distance(const Cut_boundary& from, const Cut_boundary& to)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   double sum = 0.;
   std::size_t n = 0;
@@ -297,8 +347,12 @@ inline double mean_cut_distance(const Cut_boundary& from, const Cut_boundary& to
   }
   return n == 0 ? std::numeric_limits<double>::quiet_NaN() : sum / static_cast<double>(n);
 }
+#else
+;
+#endif
 
-inline double cut_discrepancy(const Cut_boundary& a, const Cut_boundary& b, double radius)
+SPECTRALSEG_INLINE double cut_discrepancy(const Cut_boundary& a, const Cut_boundary& b, double radius)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(a.faces.empty() && b.faces.empty())
     return 0.;
@@ -306,6 +360,9 @@ inline double cut_discrepancy(const Cut_boundary& a, const Cut_boundary& b, doub
     return std::numeric_limits<double>::quiet_NaN();
   return (mean_cut_distance(a, b) + mean_cut_distance(b, a)) / radius;
 }
+#else
+;
+#endif
 
 } // namespace internal
 
@@ -324,11 +381,15 @@ inline double cut_discrepancy(const Cut_boundary& a, const Cut_boundary& b, doub
 /// \param a, b one label per face, in the same face order
 /// \returns a value in \f$[0, 1]\f$; 0 when `a` and `b` are the same partition
 /// \throws Invalid_input if a labelling is empty or the sizes differ
-inline double rand_index_error(const std::vector<int>& a, const std::vector<int>& b)
+SPECTRALSEG_INLINE double rand_index_error(const std::vector<int>& a, const std::vector<int>& b)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_labellings(a, b, "rand_index_error");
   return internal::rand_index_error(internal::contingency_table(a, b, nullptr));
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief The global consistency error (GCE) of Martin et al., area-weighted.
@@ -345,13 +406,17 @@ inline double rand_index_error(const std::vector<int>& a, const std::vector<int>
 /// \param face_areas the area of each face (finite, non-negative, not all zero)
 /// \returns a value in \f$[0, 1]\f$
 /// \throws Invalid_input if a labelling is empty, the sizes differ, or the areas are invalid
-inline double global_consistency_error(const std::vector<int>& a, const std::vector<int>& b,
-                                       const std::vector<double>& face_areas)
+SPECTRALSEG_INLINE double global_consistency_error(const std::vector<int>& a, const std::vector<int>& b,
+                                                   const std::vector<double>& face_areas)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_labellings(a, b, "global_consistency_error");
   internal::check_weights(face_areas, a.size(), "global_consistency_error");
   return internal::consistency_errors(internal::contingency_table(a, b, &face_areas)).global;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief The local consistency error (LCE) of Martin et al., area-weighted:
@@ -363,13 +428,17 @@ inline double global_consistency_error(const std::vector<int>& a, const std::vec
 /// \param face_areas the area of each face (finite, non-negative, not all zero)
 /// \returns a value in \f$[0, 1]\f$
 /// \throws Invalid_input if a labelling is empty, the sizes differ, or the areas are invalid
-inline double local_consistency_error(const std::vector<int>& a, const std::vector<int>& b,
-                                      const std::vector<double>& face_areas)
+SPECTRALSEG_INLINE double local_consistency_error(const std::vector<int>& a, const std::vector<int>& b,
+                                                  const std::vector<double>& face_areas)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_labellings(a, b, "local_consistency_error");
   internal::check_weights(face_areas, a.size(), "local_consistency_error");
   return internal::consistency_errors(internal::contingency_table(a, b, &face_areas)).local;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief The Hamming distance of two labellings with its two directional rates.
@@ -400,8 +469,9 @@ struct Hamming_distance
 /// \param b the reference, one label per face in the same order
 /// \param face_areas the area of each face (finite, non-negative, not all zero)
 /// \throws Invalid_input if a labelling is empty, the sizes differ, or the areas are invalid
-inline Hamming_distance hamming(const std::vector<int>& a, const std::vector<int>& b,
-                                const std::vector<double>& face_areas)
+SPECTRALSEG_INLINE Hamming_distance hamming(const std::vector<int>& a, const std::vector<int>& b,
+                                            const std::vector<double>& face_areas)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_labellings(a, b, "hamming");
   internal::check_weights(face_areas, a.size(), "hamming");
@@ -412,16 +482,23 @@ inline Hamming_distance hamming(const std::vector<int>& a, const std::vector<int
   h.distance = 0.5 * (h.missing_rate + h.false_alarm_rate);
   return h;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief The area-weighted Hamming distance \f$(R_m + R_f) / 2\f$; see `hamming()`.
 /// It is symmetric in `a` and `b`.
 /// \throws Invalid_input if a labelling is empty, the sizes differ, or the areas are invalid
-inline double hamming_distance(const std::vector<int>& a, const std::vector<int>& b,
-                               const std::vector<double>& face_areas)
+SPECTRALSEG_INLINE double hamming_distance(const std::vector<int>& a, const std::vector<int>& b,
+                                           const std::vector<double>& face_areas)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return hamming(a, b, face_areas).distance;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief The cut discrepancy of the benchmark, measured on the dual graph.
@@ -455,7 +532,8 @@ inline double hamming_distance(const std::vector<int>& a, const std::vector<int>
 /// \param a, b one label per face of `graph`, in the order of its faces
 /// \throws Invalid_input if a labelling is empty, does not have one label per
 ///         face, or the mesh has zero area
-inline double cut_discrepancy(const Dual_graph& graph, const std::vector<int>& a, const std::vector<int>& b)
+SPECTRALSEG_INLINE double cut_discrepancy(const Dual_graph& graph, const std::vector<int>& a, const std::vector<int>& b)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_graph_labels(graph, a, "cut_discrepancy");
   internal::check_graph_labels(graph, b, "cut_discrepancy");
@@ -464,6 +542,9 @@ inline double cut_discrepancy(const Dual_graph& graph, const std::vector<int>& a
   return internal::cut_discrepancy(internal::cut_boundary(weighted, a), internal::cut_boundary(weighted, b),
                                    radius);
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief All the scores of the benchmark for one segmentation (lower is better).
@@ -491,8 +572,9 @@ struct Scores
 /// \returns one `Scores` per ground truth, in their order
 /// \throws Invalid_input if there is no ground truth, a labelling does not
 ///         have one label per face, or the mesh has zero area
-inline std::vector<Scores> evaluate_each(const Dual_graph& graph, const std::vector<int>& predicted,
-                                         const std::vector<std::vector<int>>& ground_truths)
+SPECTRALSEG_INLINE std::vector<Scores> evaluate_each(const Dual_graph& graph, const std::vector<int>& predicted,
+                                                     const std::vector<std::vector<int>>& ground_truths)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_graph_labels(graph, predicted, "evaluate");
   if(ground_truths.empty())
@@ -525,12 +607,16 @@ inline std::vector<Scores> evaluate_each(const Dual_graph& graph, const std::vec
   }
   return out;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief The mean of each score over several evaluations; NaN values are
 /// left out of each mean (a mean with no value left is NaN).
 /// \throws Invalid_input if `scores` is empty
-inline Scores average(const std::vector<Scores>& scores)
+SPECTRALSEG_INLINE Scores average(const std::vector<Scores>& scores)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(scores.empty())
     throw Invalid_input("average: no scores given");
@@ -553,6 +639,9 @@ inline Scores average(const std::vector<Scores>& scores)
   }
   return mean;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegEvaluation
 /// \brief The benchmark's score of a segmentation on one model: each score of
@@ -567,11 +656,15 @@ inline Scores average(const std::vector<Scores>& scores)
 /// \param ground_truths one or more labellings of the faces of `graph`
 /// \throws Invalid_input if there is no ground truth, a labelling does not
 ///         have one label per face, or the mesh has zero area
-inline Scores evaluate(const Dual_graph& graph, const std::vector<int>& predicted,
-                       const std::vector<std::vector<int>>& ground_truths)
+SPECTRALSEG_INLINE Scores evaluate(const Dual_graph& graph, const std::vector<int>& predicted,
+                                   const std::vector<std::vector<int>>& ground_truths)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return average(evaluate_each(graph, predicted, ground_truths));
 }
+#else
+;
+#endif
 
 } // namespace Evaluation
 } // namespace SpectralSeg

@@ -20,6 +20,7 @@
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/Stage_timer.h>
 #include <SpectralSeg/internal/merge_by_contrast.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <atomic>
@@ -72,7 +73,8 @@ void kmeans_clusters(std::size_t k, const Basic_K_way_options<AffinityKernel>& o
 
 // The mean embedding coordinates of each of the `m` segments of `labels`
 // (one row per segment), the proxies of the graph cut after a merge.
-inline Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const std::vector<int>& labels, std::size_t m)
+SPECTRALSEG_INLINE Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const std::vector<int>& labels, std::size_t m)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Eigen::MatrixXd proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), coordinates.cols());
   std::vector<double> count(m, 0.);
@@ -85,6 +87,9 @@ inline Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const st
     proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
   return proxies;
 }
+#else
+;
+#endif
 
 // A graph cut made up to its moves: the problem, with the data terms read
 // from the embedding, so that the embedding can go before the moves run.

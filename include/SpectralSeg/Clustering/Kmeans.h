@@ -8,6 +8,7 @@
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/parallel_for.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -40,7 +41,8 @@ struct Kmeans_result
 /// approximate diameter (from point `start`, hop to the farthest point until
 /// the pair is stable), each next one the point farthest from all chosen
 /// ones. Ties go to the smallest index.
-inline std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd& points, std::size_t k, std::size_t start = 0)
+SPECTRALSEG_INLINE std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd& points, std::size_t k, std::size_t start = 0)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Index n = points.rows();
   std::vector<std::size_t> seeds;
@@ -75,14 +77,18 @@ inline std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd& points, std
   }
   return seeds;
 }
+#else
+;
+#endif
 
 namespace internal {
 
 // Lloyd's rounds on n points of `dims` coordinates, point i's at
 // p[i * step], ..., p[i * step + dims - 1], from the centroids in
 // `r.centroids`; sets r.labels, r.iterations and r.converged.
-inline void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t step, Kmeans_result& r,
-                  std::size_t max_iterations, const Execution& exec)
+SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t step, Kmeans_result& r,
+                              std::size_t max_iterations, const Execution& exec)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t kk = static_cast<std::size_t>(r.centroids.rows());
   r.labels.assign(n, -1);
@@ -262,6 +268,9 @@ inline void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t 
     });
   }
 }
+#else
+;
+#endif
 
 } // namespace internal
 
@@ -282,9 +291,10 @@ inline void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t 
 /// rounds on all the points.
 ///
 /// \throws Invalid_input if `k` is 0 or exceeds the number of points
-inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::vector<std::size_t> seeds = {},
-                            std::size_t max_iterations = 100, const Execution& exec = Execution(),
-                            std::size_t sample_limit = 0)
+SPECTRALSEG_INLINE Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::vector<std::size_t> seeds = {},
+                                        std::size_t max_iterations = 100, const Execution& exec = Execution(),
+                                        std::size_t sample_limit = 0)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = static_cast<std::size_t>(points.rows());
   if(k == 0 || k > n)
@@ -313,6 +323,9 @@ inline Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::v
   internal::lloyd(p.data(), n, dims, dims, r, max_iterations, exec);
   return r;
 }
+#else
+;
+#endif
 
 } // namespace Clustering
 } // namespace SpectralSeg

@@ -9,6 +9,7 @@
 #include <SpectralSeg/Embedding/internal/affinity.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Eigenvalues>
 #include <Spectra/MatOp/DenseSymMatProd.h>
@@ -25,8 +26,9 @@ namespace Embedding {
 namespace internal {
 
 // The `count` largest eigenpairs of a dense symmetric matrix, largest first.
-inline void leading_eigenpairs(const Row_matrix& w, Eigen::Index count, Eigen::VectorXd& values,
-                               Eigen::MatrixXd& vectors)
+SPECTRALSEG_INLINE void leading_eigenpairs(const Row_matrix& w, Eigen::Index count, Eigen::VectorXd& values,
+                                           Eigen::MatrixXd& vectors)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Index n = w.rows();
   count = std::min(count, n);
@@ -50,13 +52,17 @@ inline void leading_eigenpairs(const Row_matrix& w, Eigen::Index count, Eigen::V
   values = solver.eigenvalues();
   vectors = solver.eigenvectors();
 }
+#else
+;
+#endif
 
 // The eigenpairs an embedding keeps of `values` (in decreasing order):
 // after the first, those with a positive eigenvalue, at most `dimensions`.
 // Sets out.first_eigenvalue, out.dropped_dimensions and out.eigenvalues;
 // returns the kept columns.
-inline std::vector<Eigen::Index> kept_columns(const Eigen::VectorXd& values, std::size_t dimensions,
-                                              Spectral_embedding& out)
+SPECTRALSEG_INLINE std::vector<Eigen::Index> kept_columns(const Eigen::VectorXd& values, std::size_t dimensions,
+                                                          Spectral_embedding& out)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   out.first_eigenvalue = values.size() > 0 ? values(0) : 0.;
   const double tol = 1e-12 * std::max(1., std::abs(out.first_eigenvalue));
@@ -70,16 +76,23 @@ inline std::vector<Eigen::Index> kept_columns(const Eigen::VectorXd& values, std
     out.eigenvalues(Eigen::Index(i)) = values(kept[i]);
   return kept;
 }
+#else
+;
+#endif
 
 // U = V(:, kept) * sqrt(lambda(kept)), the columns of kept_columns().
-inline void scaled_columns(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, std::size_t dimensions,
-                           Spectral_embedding& out)
+SPECTRALSEG_INLINE void scaled_columns(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, std::size_t dimensions,
+                                       Spectral_embedding& out)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::vector<Eigen::Index> kept = kept_columns(values, dimensions, out);
   out.coordinates.resize(vectors.rows(), static_cast<Eigen::Index>(kept.size()));
   for(std::size_t i = 0; i < kept.size(); ++i)
     out.coordinates.col(Eigen::Index(i)) = vectors.col(kept[i]) * std::sqrt(values(kept[i]));
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond

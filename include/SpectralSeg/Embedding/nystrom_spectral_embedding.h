@@ -12,6 +12,7 @@
 #include <SpectralSeg/Sampling/farthest_point_samples.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -31,7 +32,8 @@ namespace Embedding {
 ///
 /// \param rows the affinity rows of the samples (samples x faces)
 /// \param samples the sampled faces, in the order of `rows`
-inline double nystrom_gamma(const internal::Row_matrix& rows, const std::vector<Dual_graph::size_type>& samples)
+SPECTRALSEG_INLINE double nystrom_gamma(const internal::Row_matrix& rows, const std::vector<Dual_graph::size_type>& samples)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Index l = static_cast<Eigen::Index>(samples.size());
   const Eigen::Index n = rows.cols();
@@ -59,6 +61,9 @@ inline double nystrom_gamma(const internal::Row_matrix& rows, const std::vector<
   }
   return double(n - l) - traced; // W_ii = 1, so tr(C) is the number of unsampled faces
 }
+#else
+;
+#endif
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -114,7 +119,8 @@ namespace internal {
 
 // The farthest-point sampling of the Nyström embedding: from a face drawn
 // with `seed`, keeping the distance rows.
-inline Sampling::Farthest_point_options farthest_point_sampling(std::size_t faces, unsigned int seed)
+SPECTRALSEG_INLINE Sampling::Farthest_point_options farthest_point_sampling(std::size_t faces, unsigned int seed)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::mt19937 random(seed);
   Sampling::Farthest_point_options o;
@@ -122,6 +128,9 @@ inline Sampling::Farthest_point_options farthest_point_sampling(std::size_t face
   o.keep_distance_rows = true; // the embedding's rows, without running Dijkstra again
   return o;
 }
+#else
+;
+#endif
 
 // The Nyström samples and their distance rows (samples x faces).
 struct Nystrom_rows
@@ -159,10 +168,11 @@ Nystrom_rows nystrom_rows(const Weighted_dual_graph& graph, std::size_t l, const
 }
 
 // The Nyström embedding from the affinity rows `w` of `samples`.
-inline Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
-                                                            std::vector<Dual_graph::size_type> samples,
-                                                            double kernel_width, std::size_t dimensions,
-                                                            const Execution& exec)
+SPECTRALSEG_INLINE Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
+                                                                        std::vector<Dual_graph::size_type> samples,
+                                                                        double kernel_width, std::size_t dimensions,
+                                                                        const Execution& exec)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = static_cast<std::size_t>(w.cols());
   const std::size_t l = samples.size();
@@ -222,6 +232,9 @@ inline Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
   exec.report("eigen-solve", 1.);
   return out;
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond

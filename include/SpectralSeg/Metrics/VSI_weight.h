@@ -11,6 +11,7 @@
 #include <SpectralSeg/Metrics/VSI/Shape_images.h>
 #include <SpectralSeg/Ray_casting/AABB_ray_caster.h>
 #include <SpectralSeg/internal/parallel_for.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <cmath>
 #include <string>
@@ -48,8 +49,9 @@ struct VSI_result
 /// faces, repeatedly, so that no `NaN` reaches a distance; with no
 /// computable edge at all, every weight is 0. `filled` receives the number
 /// of such edges.
-inline std::vector<double> vsi_edge_weights(const Dual_graph& graph, const VSI::Shape_images& images,
-                                            const Execution& exec = Execution(), std::size_t* filled = nullptr)
+SPECTRALSEG_INLINE std::vector<double> vsi_edge_weights(const Dual_graph& graph, const VSI::Shape_images& images,
+                                                        const Execution& exec = Execution(), std::size_t* filled = nullptr)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t ne = graph.number_of_edges();
   const std::size_t m = static_cast<std::size_t>(images.reaches.cols());
@@ -96,6 +98,9 @@ inline std::vector<double> vsi_edge_weights(const Dual_graph& graph, const VSI::
   }
   return w;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegVSI
 /// \brief Runs the whole VSI pipeline: reference points, shape images, edge weights.

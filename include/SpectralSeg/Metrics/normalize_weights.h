@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,8 +21,9 @@ namespace Metrics {
 /// \brief Throws `Invalid_input` unless `weights` holds one finite,
 /// non-negative value per dual edge of `graph`. `who` names the metric in
 /// the message.
-inline void check_weights(const Dual_graph& graph, const std::vector<double>& weights,
-                          const std::string& who = "metric")
+SPECTRALSEG_INLINE void check_weights(const Dual_graph& graph, const std::vector<double>& weights,
+                                      const std::string& who = "metric")
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(weights.size() != graph.number_of_edges())
     throw Invalid_input(who + ": " + std::to_string(weights.size()) + " weights for " +
@@ -31,6 +33,9 @@ inline void check_weights(const Dual_graph& graph, const std::vector<double>& we
       throw Invalid_input(who + ": weight of dual edge " + std::to_string(e) +
                           " is negative or not finite (" + std::to_string(weights[e]) + ")");
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegMetrics
 /// \brief How a blend brings each component's weights into \f$[0, 1]\f$.
@@ -63,18 +68,23 @@ struct Normalization
 /// This is the normalisation the blend applies to each component before
 /// mixing (thesis 3.5). Dividing by the maximum keeps zero at zero, so a
 /// weight never becomes zero because it is the smallest one.
-inline void normalize_weights(std::vector<double>& weights)
+SPECTRALSEG_INLINE void normalize_weights(std::vector<double>& weights)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const double m = weights.empty() ? 0. : *std::max_element(weights.begin(), weights.end());
   if(m > 0)
     for(double& w : weights)
       w /= m;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegMetrics
 /// \brief Scales non-negative weights into \f$[0, 1]\f$ as `normalization`
 /// says. A zero quantile falls back to the maximum.
-inline void normalize_weights(std::vector<double>& weights, const Normalization& normalization)
+SPECTRALSEG_INLINE void normalize_weights(std::vector<double>& weights, const Normalization& normalization)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(weights.empty())
     return;
@@ -96,6 +106,9 @@ inline void normalize_weights(std::vector<double>& weights, const Normalization&
   for(double& w : weights)
     w = std::min(1., w / scale);
 }
+#else
+;
+#endif
 
 } // namespace Metrics
 } // namespace SpectralSeg

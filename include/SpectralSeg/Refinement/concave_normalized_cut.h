@@ -8,6 +8,7 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <cmath>
 #include <cstddef>
@@ -41,7 +42,8 @@ namespace Refinement {
 /// \param angle_scale \f$s\f$, in radians; positive
 /// \throws Invalid_input if `labels` does not have one entry per face or
 ///         `angle_scale` is not a positive number
-inline double concave_normalized_cut(const Dual_graph& graph, const std::vector<int>& labels, double angle_scale)
+SPECTRALSEG_INLINE double concave_normalized_cut(const Dual_graph& graph, const std::vector<int>& labels, double angle_scale)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(labels.size() != graph.number_of_faces())
     throw Invalid_input("concave_normalized_cut: expected " + std::to_string(graph.number_of_faces()) +
@@ -72,6 +74,9 @@ inline double concave_normalized_cut(const Dual_graph& graph, const std::vector<
       value += cut[c] / vol[c];
   return value;
 }
+#else
+;
+#endif
 
 } // namespace Refinement
 } // namespace SpectralSeg

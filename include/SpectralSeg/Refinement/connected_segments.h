@@ -6,6 +6,7 @@
 #define SPECTRALSEG_REFINEMENT_CONNECTED_SEGMENTS_H
 
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <map>
@@ -30,7 +31,8 @@ namespace Refinement {
 /// mesh would visit it, so that its area is summed in the same order), not
 /// the whole mesh: the answer is that of finding every region again after
 /// each merge, in time proportional to the merged regions.
-inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<int>& labels)
+SPECTRALSEG_INLINE std::size_t make_segments_connected(const Dual_graph& graph, std::vector<int>& labels)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   typedef Dual_graph::size_type Face;
   const std::size_t n = graph.number_of_faces();
@@ -160,6 +162,9 @@ inline std::size_t make_segments_connected(const Dual_graph& graph, std::vector<
   }
   return renumber.size();
 }
+#else
+;
+#endif
 
 } // namespace Refinement
 } // namespace SpectralSeg

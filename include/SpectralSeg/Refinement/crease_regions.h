@@ -8,6 +8,7 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <boost/math/constants/constants.hpp>
 
@@ -41,7 +42,8 @@ namespace Refinement {
 ///        or more, gives one region per connected component
 /// \param region one region number per face (output)
 /// \throws Invalid_input if `min_angle_degrees` is not a number
-inline std::size_t crease_regions(const Dual_graph& graph, double min_angle_degrees, std::vector<int>& region)
+SPECTRALSEG_INLINE std::size_t crease_regions(const Dual_graph& graph, double min_angle_degrees, std::vector<int>& region)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(std::isnan(min_angle_degrees))
     throw Invalid_input("crease_regions: the crease angle is not a number");
@@ -75,6 +77,9 @@ inline std::size_t crease_regions(const Dual_graph& graph, double min_angle_degr
   }
   return std::size_t(count);
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegRefinement
 /// \brief Splits every segment along the crease regions it overlaps:
@@ -89,7 +94,8 @@ inline std::size_t crease_regions(const Dual_graph& graph, double min_angle_degr
 /// \param region one region number per face (from `crease_regions()`)
 /// \param labels one label per face, in and out
 /// \throws Invalid_input if the sizes differ
-inline std::size_t split_along_regions(const std::vector<int>& region, std::vector<int>& labels)
+SPECTRALSEG_INLINE std::size_t split_along_regions(const std::vector<int>& region, std::vector<int>& labels)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(region.size() != labels.size())
     throw Invalid_input("split_along_regions: " + std::to_string(region.size()) + " regions for " +
@@ -99,6 +105,9 @@ inline std::size_t split_along_regions(const std::vector<int>& region, std::vect
     labels[f] = combined.emplace(std::make_pair(labels[f], region[f]), int(combined.size())).first->second;
   return combined.size();
 }
+#else
+;
+#endif
 
 } // namespace Refinement
 } // namespace SpectralSeg

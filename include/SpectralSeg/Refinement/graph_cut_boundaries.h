@@ -127,7 +127,8 @@ inline Boost_max_flow_backend* boost_max_flow_backends()
 }
 
 // The area of each segment, indexed by label.
-inline std::vector<double> segment_areas(const Dual_graph& graph, const std::vector<int>& labels)
+SPECTRALSEG_INLINE std::vector<double> segment_areas(const Dual_graph& graph, const std::vector<int>& labels)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   int count = 0;
   for(int l : labels)
@@ -137,6 +138,9 @@ inline std::vector<double> segment_areas(const Dual_graph& graph, const std::vec
     area[std::size_t(labels[f])] += graph.geometry().areas[f];
   return area;
 }
+#else
+;
+#endif
 
 typedef std::pair<double, Dual_graph::size_type> Distance_item;
 typedef std::priority_queue<Distance_item, std::vector<Distance_item>, std::greater<Distance_item>> Distance_queue;
@@ -173,7 +177,8 @@ void dijkstra_within_segments(const Dual_graph& graph, const std::vector<int>& l
 // area of the segment's boundary (geodesic distance between face centres
 // over the dual graph, from the faces on the boundary) and in the half of
 // the segment nearest it, 0 for the others.
-inline std::vector<char> boundary_band(const Dual_graph& graph, const std::vector<int>& labels, double width)
+SPECTRALSEG_INLINE std::vector<char> boundary_band(const Dual_graph& graph, const std::vector<int>& labels, double width)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = graph.number_of_faces();
   const std::vector<double> area = segment_areas(graph, labels);
@@ -205,6 +210,9 @@ inline std::vector<char> boundary_band(const Dual_graph& graph, const std::vecto
   }
   return out;
 }
+#else
+;
+#endif
 
 // For the faces of `in_band`, the other labels each may take: those of the
 // segments whose boundary with the face's segment lies within `width` times
@@ -217,8 +225,9 @@ struct Band_labels
   std::vector<int> reachable;
 };
 
-inline Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& labels,
-                               const std::vector<char>& in_band, double width)
+SPECTRALSEG_INLINE Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& labels,
+                                           const std::vector<char>& in_band, double width)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = graph.number_of_faces();
   const std::vector<double> area = segment_areas(graph, labels);
@@ -279,9 +288,13 @@ inline Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& 
   out.offset[0] = 0;
   return out;
 }
+#else
+;
+#endif
 
-inline void run_boost_max_flow_backend(Graph_cut_backend backend, const Potts_problem& problem,
-                                       std::vector<std::size_t>& l, unsigned threads)
+SPECTRALSEG_INLINE void run_boost_max_flow_backend(Graph_cut_backend backend, const Potts_problem& problem,
+                                                   std::vector<std::size_t>& l, unsigned threads)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Boost_max_flow_backend run =
     boost_max_flow_backends()[backend == Graph_cut_backend::boost_adjacency_list ? 0 : 1];
@@ -290,6 +303,9 @@ inline void run_boost_max_flow_backend(Graph_cut_backend backend, const Potts_pr
                         "#include <SpectralSeg/Refinement/graph_cut_boost_backends.h> in the program");
   run(problem, l, threads);
 }
+#else
+;
+#endif
 
 // The max-flow problem of graph_cut_boundaries(): its variables (the faces
 // whose data term does not decide their label) and their Potts problem.
@@ -303,9 +319,10 @@ struct Graph_cut_problem
 
 // graph_cut_boundaries() up to the moves: checks the input and makes the
 // problem (none when there are fewer than two proxies or no variable).
-inline Graph_cut_problem graph_cut_problem(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
-                                           const Eigen::MatrixXd& proxies, const std::vector<int>& labels,
-                                           const Graph_cut_options& options)
+SPECTRALSEG_INLINE Graph_cut_problem graph_cut_problem(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
+                                                       const Eigen::MatrixXd& proxies, const std::vector<int>& labels,
+                                                       const Graph_cut_options& options)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Graph_cut_problem out;
   const std::size_t n = graph.number_of_faces();
@@ -462,12 +479,16 @@ inline Graph_cut_problem graph_cut_problem(const Dual_graph& graph, const Eigen:
 
   return out;
 }
+#else
+;
+#endif
 
 // Runs the alpha expansion of `cut` (made by graph_cut_problem() for
 // `labels`) on `threads` threads (the same result on any number) and
 // writes its labels of the variables into `labels`.
-inline void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labels, const Graph_cut_options& options,
-                            unsigned threads = 1)
+SPECTRALSEG_INLINE void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labels, const Graph_cut_options& options,
+                                        unsigned threads = 1)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Potts_problem& problem = cut.problem;
   if(problem.vertices == 0)
@@ -488,6 +509,9 @@ inline void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labe
   for(std::size_t v = 0; v < problem.vertices; ++v)
     labels[cut.face_of_variable[v]] = static_cast<int>(l[v]);
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -520,19 +544,24 @@ inline void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labe
 /// \param proxies one row per segment
 /// \param labels the labels to refine (in `[0, proxies.rows())`), replaced by the result
 /// \param options \f$\mu\f$, \f$\nu\f$ and the backend
-inline void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
-                                 const Eigen::MatrixXd& proxies, std::vector<int>& labels,
-                                 const Graph_cut_options& options = Graph_cut_options())
+SPECTRALSEG_INLINE void graph_cut_boundaries(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
+                                             const Eigen::MatrixXd& proxies, std::vector<int>& labels,
+                                             const Graph_cut_options& options = Graph_cut_options())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   // the problem's scratch (per face and per edge) is released before the moves
   internal::solve_graph_cut(internal::graph_cut_problem(graph, embedding, proxies, labels, options), labels, options);
 }
+#else
+;
+#endif
 
 } // namespace Refinement
 } // namespace SpectralSeg
 
 #ifndef SPECTRALSEG_USE_MAXFLOW
 #include <SpectralSeg/Refinement/graph_cut_boost_backends.h> // the default backend
+#include <SpectralSeg/internal/separate_compilation.h>
 #endif
 
 #endif

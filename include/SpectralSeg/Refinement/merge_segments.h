@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -73,7 +74,8 @@ struct Segment_moments
 
 // |mu_a - mu_b|^2 / (sigma_a^2 + sigma_b^2) (see Embedding_separation);
 // infinite when both spreads are 0 and the means differ.
-inline double embedding_separation(const Segment_moments& a, const Segment_moments& b)
+SPECTRALSEG_INLINE double embedding_separation(const Segment_moments& a, const Segment_moments& b)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(!(a.area > 0.) || !(b.area > 0.))
     return std::numeric_limits<double>::infinity();
@@ -83,6 +85,9 @@ inline double embedding_separation(const Segment_moments& a, const Segment_momen
   const double gap = (ma - mb).squaredNorm();
   return gap > 0. ? (spread > 0. ? gap / spread : std::numeric_limits<double>::infinity()) : 0.;
 }
+#else
+;
+#endif
 
 // What a merge order says of one pair of adjacent segments: `order`
 // ranks the pairs (the lowest is merged first) and `strength` is what the
@@ -274,9 +279,10 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
 
 // merge_weakest_boundaries() without its checks, recording its merges in
 // `history` (see merge_cheapest_boundaries()).
-inline std::size_t merge_weakest(const Dual_graph& graph, const std::vector<double>& weights, std::vector<int>& labels,
-                                 std::size_t k, double strength_limit, double min_area_fraction, double size_exponent,
-                                 const Embedding_separation& separation, Merge_history* history = nullptr)
+SPECTRALSEG_INLINE std::size_t merge_weakest(const Dual_graph& graph, const std::vector<double>& weights, std::vector<int>& labels,
+                                             std::size_t k, double strength_limit, double min_area_fraction, double size_exponent,
+                                             const Embedding_separation& separation, Merge_history* history = nullptr)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const bool separate = separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0;
   return merge_cheapest_boundaries(
@@ -290,6 +296,9 @@ inline std::size_t merge_weakest(const Dual_graph& graph, const std::vector<doub
     },
     separate ? separation.coordinates : nullptr, history);
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -338,11 +347,12 @@ inline std::size_t merge_weakest(const Dual_graph& graph, const std::vector<doub
 /// \throws Invalid_input if the sizes do not match the graph,
 ///         `size_exponent` or `separation.exponent` is negative or not a
 ///         number, or `separation.scale` is not positive
-inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
-                                            std::vector<int>& labels, std::size_t k,
-                                            double strength_limit = std::numeric_limits<double>::infinity(),
-                                            double min_area_fraction = 0., double size_exponent = 0.,
-                                            const Embedding_separation& separation = Embedding_separation())
+SPECTRALSEG_INLINE std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
+                                                        std::vector<int>& labels, std::size_t k,
+                                                        double strength_limit = std::numeric_limits<double>::infinity(),
+                                                        double min_area_fraction = 0., double size_exponent = 0.,
+                                                        const Embedding_separation& separation = Embedding_separation())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(labels.size() != graph.number_of_faces() || weights.size() != graph.number_of_edges())
     throw Invalid_input("merge_weakest_boundaries: expected " + std::to_string(graph.number_of_faces()) +
@@ -359,6 +369,9 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
   return internal::merge_weakest(graph, weights, labels, k, strength_limit, min_area_fraction, size_exponent,
                                 separation);
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegRefinement
 /// \brief A boundary-strength weight per dual edge for
@@ -367,7 +380,8 @@ inline std::size_t merge_weakest_boundaries(const Dual_graph& graph, const std::
 ///
 /// Parts meet along concave creases (the minima rule); a seam through a
 /// smooth or convex stretch of surface has a mean of about 0.
-inline std::vector<double> concave_angle_weights(const Dual_graph& graph)
+SPECTRALSEG_INLINE std::vector<double> concave_angle_weights(const Dual_graph& graph)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<double> w(graph.number_of_edges());
   for(std::size_t d = 0; d < w.size(); ++d)
@@ -377,6 +391,9 @@ inline std::vector<double> concave_angle_weights(const Dual_graph& graph)
   }
   return w;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegRefinement
 /// \brief `concave_angle_weights()` as they would be measured on the same
@@ -396,7 +413,8 @@ inline std::vector<double> concave_angle_weights(const Dual_graph& graph)
 /// `concave_angle_weights()` exactly. The averaging stays within connected
 /// components, does not depend on the face order beyond the rounding of
 /// sums, and costs \f$s\f$ passes over the faces.
-inline std::vector<double> concave_angle_weights(const Dual_graph& graph, std::size_t reference_faces)
+SPECTRALSEG_INLINE std::vector<double> concave_angle_weights(const Dual_graph& graph, std::size_t reference_faces)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = graph.number_of_faces();
   if(reference_faces == 0 || n <= reference_faces)
@@ -433,6 +451,9 @@ inline std::vector<double> concave_angle_weights(const Dual_graph& graph, std::s
   }
   return w;
 }
+#else
+;
+#endif
 
 } // namespace Refinement
 } // namespace SpectralSeg

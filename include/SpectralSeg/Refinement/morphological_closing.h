@@ -8,6 +8,7 @@
 
 #include <SpectralSeg/Mesh_piece.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -52,8 +53,9 @@ struct Vertex_faces
 
 // Ring distance (through shared vertices) from the seed faces, up to `rings`;
 // faces farther away keep `unreached`.
-inline void ring_distances(const Mesh_piece& piece, const Vertex_faces& vf, const std::vector<std::uint32_t>& seeds,
-                           std::size_t rings, std::vector<std::uint32_t>& dist, std::vector<std::uint32_t>& touched)
+SPECTRALSEG_INLINE void ring_distances(const Mesh_piece& piece, const Vertex_faces& vf, const std::vector<std::uint32_t>& seeds,
+                                       std::size_t rings, std::vector<std::uint32_t>& dist, std::vector<std::uint32_t>& touched)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::uint32_t unreached = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> frontier = seeds, next;
@@ -78,12 +80,16 @@ inline void ring_distances(const Mesh_piece& piece, const Vertex_faces& vf, cons
     frontier.swap(next);
   }
 }
+#else
+;
+#endif
 
 // Closing of the faces labelled `a` by a `rings`-ring structuring element;
 // returns the faces of the other label that it moves into `a` (not applied).
-inline std::vector<std::uint32_t> closing_swaps(const Mesh_piece& piece, const Vertex_faces& vf,
-                                                const std::vector<std::uint8_t>& side, std::uint8_t a,
-                                                std::size_t rings)
+SPECTRALSEG_INLINE std::vector<std::uint32_t> closing_swaps(const Mesh_piece& piece, const Vertex_faces& vf,
+                                                            const std::vector<std::uint8_t>& side, std::uint8_t a,
+                                                            std::size_t rings)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::uint32_t n = piece.number_of_faces();
   const std::uint32_t unreached = std::numeric_limits<std::uint32_t>::max();
@@ -131,6 +137,9 @@ inline std::vector<std::uint32_t> closing_swaps(const Mesh_piece& piece, const V
       kept.push_back(f);
   return kept;
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -151,7 +160,8 @@ inline std::vector<std::uint32_t> closing_swaps(const Mesh_piece& piece, const V
 /// \param rings radius of the structuring element (at least 1)
 /// \return the number of faces that changed side
 /// \throws Invalid_input if `side` does not have one entry per face
-inline std::size_t close_cut_boundary(const Mesh_piece& piece, std::vector<std::uint8_t>& side, std::size_t rings)
+SPECTRALSEG_INLINE std::size_t close_cut_boundary(const Mesh_piece& piece, std::vector<std::uint8_t>& side, std::size_t rings)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(side.size() != piece.number_of_faces())
     throw Invalid_input("close_cut_boundary: one side per face expected");
@@ -178,6 +188,9 @@ inline std::size_t close_cut_boundary(const Mesh_piece& piece, std::vector<std::
     side[f] = best_side;
   return best.size();
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegRefinement
 /// \brief Makes each side of a two-way cut one connected region (through
@@ -186,7 +199,8 @@ inline std::size_t close_cut_boundary(const Mesh_piece& piece, std::vector<std::
 /// round flips, in increasing area, the components that touch no component
 /// flipped in the same round, until each side is one region.
 /// \return the number of faces that changed side
-inline std::size_t make_cut_sides_connected(const Mesh_piece& piece, std::vector<std::uint8_t>& side)
+SPECTRALSEG_INLINE std::size_t make_cut_sides_connected(const Mesh_piece& piece, std::vector<std::uint8_t>& side)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::uint32_t n = piece.number_of_faces();
   if(side.size() != n)
@@ -261,6 +275,9 @@ inline std::size_t make_cut_sides_connected(const Mesh_piece& piece, std::vector
     }
   }
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegRefinement
 /// \brief The thesis's boundary enhancement of a salient cut: a closing with
@@ -271,14 +288,18 @@ inline std::size_t make_cut_sides_connected(const Mesh_piece& piece, std::vector
 /// \param side one value per local face, 0 or 1
 /// \param rings the radii of the successive closings
 /// \return the number of faces that changed side
-inline std::size_t enhance_cut_boundary(const Mesh_piece& piece, std::vector<std::uint8_t>& side,
-                                        const std::vector<std::size_t>& rings = {3, 1})
+SPECTRALSEG_INLINE std::size_t enhance_cut_boundary(const Mesh_piece& piece, std::vector<std::uint8_t>& side,
+                                                    const std::vector<std::size_t>& rings = {3, 1})
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::size_t moved = 0;
   for(std::size_t r : rings)
     moved += close_cut_boundary(piece, side, r);
   return moved + make_cut_sides_connected(piece, side);
 }
+#else
+;
+#endif
 
 } // namespace Refinement
 } // namespace SpectralSeg

@@ -9,6 +9,7 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <boost/math/constants/constants.hpp>
 
@@ -33,7 +34,8 @@ namespace Refinement {
 /// \param sharp_degrees the angle from which a fold counts as sharp
 /// \throws Invalid_input unless \f$0 \le\f$ `fold_degrees` \f$\le\f$
 ///         `sharp_degrees` \f$\le 180\f$
-inline double sharp_crease_share(const Dual_graph& graph, double fold_degrees = 30., double sharp_degrees = 60.)
+SPECTRALSEG_INLINE double sharp_crease_share(const Dual_graph& graph, double fold_degrees = 30., double sharp_degrees = 60.)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(!(fold_degrees >= 0. && fold_degrees <= sharp_degrees && sharp_degrees <= 180.))
     throw Invalid_input("sharp_crease_share: expected 0 <= fold angle <= sharp angle <= 180 degrees");
@@ -50,6 +52,9 @@ inline double sharp_crease_share(const Dual_graph& graph, double fold_degrees = 
   }
   return folded > 0. ? sharp / folded : 0.;
 }
+#else
+;
+#endif
 
 } // namespace Refinement
 } // namespace SpectralSeg

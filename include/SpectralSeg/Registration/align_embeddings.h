@@ -7,6 +7,7 @@
 #define SPECTRALSEG_REGISTRATION_ALIGN_EMBEDDINGS_H
 
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -59,7 +60,8 @@ struct Embedding_alignment
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-inline Eigen::MatrixXd strided_rows(const Eigen::MatrixXd& m, std::size_t max_points)
+SPECTRALSEG_INLINE Eigen::MatrixXd strided_rows(const Eigen::MatrixXd& m, std::size_t max_points)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Index n = m.rows();
   const Eigen::Index k = std::min<Eigen::Index>(n, static_cast<Eigen::Index>(max_points));
@@ -68,11 +70,15 @@ inline Eigen::MatrixXd strided_rows(const Eigen::MatrixXd& m, std::size_t max_po
     r.row(i) = m.row(static_cast<Eigen::Index>(double(i) * double(n) / double(k)));
   return r;
 }
+#else
+;
+#endif
 
 // Closest-point iterations from `source` (points as columns) onto `target`;
 // returns the accumulated transform and sets `rms`.
-inline Eigen::MatrixXd icp(const Eigen::MatrixXd& source, const Eigen::MatrixXd& target, const Alignment_options& o,
-                           double& rms)
+SPECTRALSEG_INLINE Eigen::MatrixXd icp(const Eigen::MatrixXd& source, const Eigen::MatrixXd& target, const Alignment_options& o,
+                                       double& rms)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Index d = source.rows();
   Eigen::MatrixXd total = Eigen::MatrixXd::Identity(d + 1, d + 1);
@@ -99,6 +105,9 @@ inline Eigen::MatrixXd icp(const Eigen::MatrixXd& source, const Eigen::MatrixXd&
   }
   return total;
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -121,8 +130,9 @@ inline Eigen::MatrixXd icp(const Eigen::MatrixXd& source, const Eigen::MatrixXd&
 ///
 /// \throws Invalid_input if a matrix is empty, the column counts differ, or
 ///         the row counts differ with `rows_correspond`
-inline Embedding_alignment align_embeddings(const Eigen::MatrixXd& source, const Eigen::MatrixXd& target,
-                                            const Alignment_options& options = Alignment_options())
+SPECTRALSEG_INLINE Embedding_alignment align_embeddings(const Eigen::MatrixXd& source, const Eigen::MatrixXd& target,
+                                                        const Alignment_options& options = Alignment_options())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(source.rows() == 0 || target.rows() == 0 || source.cols() == 0)
     throw Invalid_input("align_embeddings: an embedding is empty");
@@ -160,6 +170,9 @@ inline Embedding_alignment align_embeddings(const Eigen::MatrixXd& source, const
       .transpose();
   return best;
 }
+#else
+;
+#endif
 
 } // namespace Registration
 } // namespace SpectralSeg

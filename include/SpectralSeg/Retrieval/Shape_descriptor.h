@@ -16,6 +16,7 @@
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/parallel_for.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -99,7 +100,8 @@ struct Shape_descriptor
 /// \f$a_i + b_i > 0\f$: 0 for equal histograms, 1 for histograms with
 /// disjoint supports, symmetric.
 /// \throws Invalid_input if the descriptors differ in metric, number of bins or range
-inline double chi_square_distance(const Shape_descriptor& a, const Shape_descriptor& b)
+SPECTRALSEG_INLINE double chi_square_distance(const Shape_descriptor& a, const Shape_descriptor& b)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(a.metric != b.metric)
     throw Invalid_input("chi_square_distance: a '" + a.metric + "' descriptor cannot be compared to a '" + b.metric +
@@ -117,6 +119,9 @@ inline double chi_square_distance(const Shape_descriptor& a, const Shape_descrip
   }
   return 0.5 * d;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegRetrieval
 /// \brief One entry of a ranking: a database position and its distance to the query.
@@ -132,7 +137,8 @@ struct Ranked_shape
 /// \brief Ranks `database` by chi-square distance to `query`, nearest first;
 /// equal distances keep the database order.
 /// \throws Invalid_input if a descriptor cannot be compared to the query
-inline std::vector<Ranked_shape> rank_shapes(const Shape_descriptor& query, const std::vector<Shape_descriptor>& database)
+SPECTRALSEG_INLINE std::vector<Ranked_shape> rank_shapes(const Shape_descriptor& query, const std::vector<Shape_descriptor>& database)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<Ranked_shape> r;
   r.reserve(database.size());
@@ -141,6 +147,9 @@ inline std::vector<Ranked_shape> rank_shapes(const Shape_descriptor& query, cons
   std::stable_sort(r.begin(), r.end(), [](const Ranked_shape& x, const Ranked_shape& y) { return x.distance < y.distance; });
   return r;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegRetrieval
 /// \brief Retrieval scores of a database queried with each of its shapes
@@ -164,8 +173,9 @@ struct Retrieval_scores
 /// shapes, for the classes `category`. Ties go to the smaller index. Shapes
 /// alone in their class are not queried.
 /// \throws Invalid_input if the sizes do not match
-inline Retrieval_scores retrieval_scores(const std::vector<std::vector<double>>& distance,
-                                         const std::vector<std::string>& category)
+SPECTRALSEG_INLINE Retrieval_scores retrieval_scores(const std::vector<std::vector<double>>& distance,
+                                                     const std::vector<std::string>& category)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = category.size();
   if(distance.size() != n)
@@ -205,6 +215,9 @@ inline Retrieval_scores retrieval_scores(const std::vector<std::vector<double>>&
   }
   return s;
 }
+#else
+;
+#endif
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -217,7 +230,8 @@ struct Descriptor_sources
   std::vector<double> weight;
 };
 
-inline Descriptor_sources descriptor_sources(const Dual_graph& graph, std::size_t count, const Execution& exec)
+SPECTRALSEG_INLINE Descriptor_sources descriptor_sources(const Dual_graph& graph, std::size_t count, const Execution& exec)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::vector<double>& area = graph.geometry().areas;
   const Weighted_dual_graph geodesic(graph, Metrics::Geodesic_weight()(graph));
@@ -241,6 +255,9 @@ inline Descriptor_sources descriptor_sources(const Dual_graph& graph, std::size_
     w /= total;
   return s;
 }
+#else
+;
+#endif
 
 // The descriptor from the distances of each source to every face:
 // row(source, out) fills out[f] (float, +inf when unreachable).
@@ -334,9 +351,10 @@ Shape_descriptor descriptor_from_rows(const Dual_graph& graph, const Descriptor_
 /// \param options bins, sources, range
 /// \param exec threads and progress
 /// \throws Invalid_input for invalid options, a mesh without area or all distances zero
-inline Shape_descriptor shape_descriptor(const Weighted_dual_graph& weighted, const std::string& metric,
-                                         const Descriptor_options& options = Descriptor_options(),
-                                         const Execution& exec = Execution())
+SPECTRALSEG_INLINE Shape_descriptor shape_descriptor(const Weighted_dual_graph& weighted, const std::string& metric,
+                                                     const Descriptor_options& options = Descriptor_options(),
+                                                     const Execution& exec = Execution())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   options.check();
   const internal::Descriptor_sources src = internal::descriptor_sources(weighted.graph(), options.sources, exec);
@@ -348,13 +366,17 @@ inline Shape_descriptor shape_descriptor(const Weighted_dual_graph& weighted, co
     },
     metric, options, exec);
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegRetrieval
 /// \brief The D2 descriptor of a dual graph: as the other overload, with
 /// the Euclidean distances between face centroids.
-inline Shape_descriptor shape_descriptor(const Dual_graph& graph, Euclidean_distance metric,
-                                         const Descriptor_options& options = Descriptor_options(),
-                                         const Execution& exec = Execution())
+SPECTRALSEG_INLINE Shape_descriptor shape_descriptor(const Dual_graph& graph, Euclidean_distance metric,
+                                                     const Descriptor_options& options = Descriptor_options(),
+                                                     const Execution& exec = Execution())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   options.check();
   const internal::Descriptor_sources src = internal::descriptor_sources(graph, options.sources, exec);
@@ -367,6 +389,9 @@ inline Shape_descriptor shape_descriptor(const Dual_graph& graph, Euclidean_dist
     },
     metric.name(), options, exec);
 }
+#else
+;
+#endif
 
 } // namespace Retrieval
 } // namespace SpectralSeg

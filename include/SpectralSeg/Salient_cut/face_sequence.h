@@ -11,6 +11,7 @@
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/Fill_reducing_order.h>
 #include <SpectralSeg/internal/parallel_for.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -49,8 +50,9 @@ struct Face_sequence
 /// mesh's dual edge `e`; edges leaving the piece are not used. Faces the
 /// source cannot reach get `+infinity`.
 /// \pre `weights` has one finite, non-negative value per dual edge of the mesh
-inline std::vector<double> piece_distances(const Mesh_piece& piece, const std::vector<double>& weights,
-                                           Mesh_piece::size_type source)
+SPECTRALSEG_INLINE std::vector<double> piece_distances(const Mesh_piece& piece, const std::vector<double>& weights,
+                                                       Mesh_piece::size_type source)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   typedef boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, boost::no_property,
                                              boost::no_property, Mesh_piece::size_type, Mesh_piece::size_type>
@@ -81,6 +83,9 @@ inline std::vector<double> piece_distances(const Mesh_piece& piece, const std::v
     boost::closed_plus<double>(inf), inf, 0., boost::default_dijkstra_visitor());
   return d;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegSalientCut
 /// \brief Sorts the faces of a piece by \f$d(f, s) - d(f, t)\f$ (thesis eq.
@@ -99,9 +104,10 @@ inline std::vector<double> piece_distances(const Mesh_piece& piece, const std::v
 /// \param exec threads
 /// \pre the piece is connected, so every face has finite distances
 /// \throws Invalid_input if a sample is out of range
-inline Face_sequence face_sequence(const Mesh_piece& piece, const std::vector<double>& weights,
-                                   Mesh_piece::size_type source, Mesh_piece::size_type target,
-                                   const Execution& exec = Execution())
+SPECTRALSEG_INLINE Face_sequence face_sequence(const Mesh_piece& piece, const std::vector<double>& weights,
+                                               Mesh_piece::size_type source, Mesh_piece::size_type target,
+                                               const Execution& exec = Execution())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = piece.number_of_faces();
   if(source >= n || target >= n)
@@ -126,6 +132,9 @@ inline Face_sequence face_sequence(const Mesh_piece& piece, const std::vector<do
   });
   return s;
 }
+#else
+;
+#endif
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -279,8 +288,9 @@ private:
 /// \throws Invalid_input if a sample is out of range, the two samples are
 ///         the same face or `angle_scale` is not a positive number
 /// \throws Error if the factorisation fails
-inline Face_sequence harmonic_face_sequence(const Mesh_piece& piece, Mesh_piece::size_type source,
-                                            Mesh_piece::size_type target, double angle_scale)
+SPECTRALSEG_INLINE Face_sequence harmonic_face_sequence(const Mesh_piece& piece, Mesh_piece::size_type source,
+                                                        Mesh_piece::size_type target, double angle_scale)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = piece.number_of_faces();
   if(source >= n || target >= n || source == target)
@@ -288,6 +298,9 @@ inline Face_sequence harmonic_face_sequence(const Mesh_piece& piece, Mesh_piece:
   internal::Harmonic_system system(piece, angle_scale);
   return system.sequence(source, target);
 }
+#else
+;
+#endif
 
 } // namespace Salient_cut
 } // namespace SpectralSeg

@@ -10,6 +10,7 @@
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/parallel_for.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <atomic>
@@ -76,9 +77,10 @@ struct Farthest_point_options
 ///        to compute the samples' distance rows
 /// \param exec progress reporting
 /// \throws Invalid_input if `count` is 0 or exceeds the number of faces, or `start` is out of range
-inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& graph, std::size_t count,
-                                                     const Farthest_point_options& options,
-                                                     const Execution& exec = Execution())
+SPECTRALSEG_INLINE Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& graph, std::size_t count,
+                                                                 const Farthest_point_options& options,
+                                                                 const Execution& exec = Execution())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = graph.graph().number_of_faces();
   const Dual_graph::size_type start = options.start;
@@ -220,19 +222,26 @@ inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& 
   }
   return out;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegSampling
 /// \brief `farthest_point_samples()` from face `start`, with at most
 /// `max_hops` hops of the diameter search.
-inline Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& graph, std::size_t count,
-                                                     Dual_graph::size_type start = 0, std::size_t max_hops = 10,
-                                                     const Execution& exec = Execution())
+SPECTRALSEG_INLINE Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& graph, std::size_t count,
+                                                                 Dual_graph::size_type start = 0, std::size_t max_hops = 10,
+                                                                 const Execution& exec = Execution())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Farthest_point_options options;
   options.start = start;
   options.max_hops = max_hops;
   return farthest_point_samples(graph, count, options, exec);
 }
+#else
+;
+#endif
 
 } // namespace Sampling
 } // namespace SpectralSeg

@@ -15,6 +15,7 @@
 #include <SpectralSeg/Segmentability/smooth_contour.h>
 #include <SpectralSeg/Segmentability/trace_outer_contour.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -81,7 +82,8 @@ struct Contour_analysis
 /// \param options only `perimeter_exponent` is read
 /// \throws Invalid_input if `analysis.inner` does not match
 ///         `analysis.contour`
-inline void add_normalized(Contour_analysis& analysis, const Contour_options& options = Contour_options())
+SPECTRALSEG_INLINE void add_normalized(Contour_analysis& analysis, const Contour_options& options = Contour_options())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(analysis.has_normalized)
     return;
@@ -92,6 +94,9 @@ inline void add_normalized(Contour_analysis& analysis, const Contour_options& op
   analysis.normalized_score = segmentability_score(analysis.normalized, options.perimeter_exponent);
   analysis.has_normalized = true;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegSegmentability
 /// \brief The contour analysis of one 2D projection of a mesh: traces the
@@ -113,10 +118,11 @@ inline void add_normalized(Contour_analysis& analysis, const Contour_options& op
 ///        `add_normalized()` can do it later
 /// \throws Invalid_input on non-finite coordinates, out-of-range indices or
 ///         invalid options (see the stages)
-inline Contour_analysis analyse_contour(const std::vector<Eigen::Vector2d>& points,
-                                        const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                                        const Contour_options& options = Contour_options(),
-                                        bool compute_normalized = true)
+SPECTRALSEG_INLINE Contour_analysis analyse_contour(const std::vector<Eigen::Vector2d>& points,
+                                                    const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                                    const Contour_options& options = Contour_options(),
+                                                    bool compute_normalized = true)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Contour_analysis analysis;
   analysis.traced = trace_outer_contour(points, triangles, options.resolution);
@@ -128,6 +134,9 @@ inline Contour_analysis analyse_contour(const std::vector<Eigen::Vector2d>& poin
     add_normalized(analysis, options);
   return analysis;
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Segmentability/Contour.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
@@ -58,7 +59,8 @@ struct Convexity
 ///         concavity to show
 /// \throws Invalid_input if a coordinate is not finite or
 ///         `perimeter_exponent` is not finite and positive
-inline Convexity convexity(const Contour& c, double perimeter_exponent = 4.)
+SPECTRALSEG_INLINE Convexity convexity(const Contour& c, double perimeter_exponent = 4.)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_finite(c, "convexity");
   if(!(perimeter_exponent > 0.) || !std::isfinite(perimeter_exponent))
@@ -86,6 +88,9 @@ inline Convexity convexity(const Contour& c, double perimeter_exponent = 4.)
   result.convexity = std::max(result.area_ratio, std::pow(result.perimeter_ratio, perimeter_exponent));
   return result;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegSegmentability
 /// \brief The segmentability score \f$S = 1 - C\f$ of a contour, with
@@ -96,10 +101,14 @@ inline Convexity convexity(const Contour& c, double perimeter_exponent = 4.)
 /// \return a value in \f$[0, 1)\f$ (\f$C_2 > 0\f$ whenever the hull has
 ///         a positive area); 0 for a degenerate contour
 /// \throws Invalid_input as `convexity()`
-inline double segmentability_score(const Contour& c, double perimeter_exponent = 4.)
+SPECTRALSEG_INLINE double segmentability_score(const Contour& c, double perimeter_exponent = 4.)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return 1. - convexity(c, perimeter_exponent).convexity;
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

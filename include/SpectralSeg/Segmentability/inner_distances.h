@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Segmentability/Contour.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -26,7 +27,8 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Contour_kernel;
 
 // Even-odd test of a point against the closed polygon `polygon`; points on
 // the boundary may go either way.
-inline bool inside_even_odd(const std::vector<Contour_kernel::Point_2>& polygon, const Contour_kernel::Point_2& q)
+SPECTRALSEG_INLINE bool inside_even_odd(const std::vector<Contour_kernel::Point_2>& polygon, const Contour_kernel::Point_2& q)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   bool inside = false;
   const std::size_t n = polygon.size();
@@ -44,20 +46,28 @@ inline bool inside_even_odd(const std::vector<Contour_kernel::Point_2>& polygon,
   }
   return inside;
 }
+#else
+;
+#endif
 
 // Whether the open segments pq and rs cross at one point inside both.
-inline bool cross_properly(const Contour_kernel::Point_2& p, const Contour_kernel::Point_2& q,
-                           const Contour_kernel::Point_2& r, const Contour_kernel::Point_2& s)
+SPECTRALSEG_INLINE bool cross_properly(const Contour_kernel::Point_2& p, const Contour_kernel::Point_2& q,
+                                       const Contour_kernel::Point_2& r, const Contour_kernel::Point_2& s)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const CGAL::Orientation o1 = CGAL::orientation(p, q, r), o2 = CGAL::orientation(p, q, s);
   const CGAL::Orientation o3 = CGAL::orientation(r, s, p), o4 = CGAL::orientation(r, s, q);
   return o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o1 != o2 && o3 != CGAL::COLLINEAR &&
          o4 != CGAL::COLLINEAR && o3 != o4;
 }
+#else
+;
+#endif
 
 // Whether vertices i and j of the polygon see each other through its
 // interior (see inner_distances()).
-inline bool see_each_other(const std::vector<Contour_kernel::Point_2>& polygon, std::size_t i, std::size_t j)
+SPECTRALSEG_INLINE bool see_each_other(const std::vector<Contour_kernel::Point_2>& polygon, std::size_t i, std::size_t j)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = polygon.size();
   const Contour_kernel::Point_2& p = polygon[i];
@@ -80,6 +90,9 @@ inline bool see_each_other(const std::vector<Contour_kernel::Point_2>& polygon, 
   }
   return inside_even_odd(polygon, CGAL::midpoint(p, q));
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -106,7 +119,8 @@ inline bool see_each_other(const std::vector<Contour_kernel::Point_2>& polygon, 
 /// \return the symmetric \f$n \times n\f$ matrix of inner distances, with a
 ///         zero diagonal; empty for an empty contour
 /// \throws Invalid_input if a coordinate is not finite
-inline Eigen::MatrixXd inner_distances(const Contour& c)
+SPECTRALSEG_INLINE Eigen::MatrixXd inner_distances(const Contour& c)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_finite(c, "inner_distances");
   typedef internal::Contour_kernel::Point_2 Point;
@@ -142,6 +156,9 @@ inline Eigen::MatrixXd inner_distances(const Contour& c)
   d = 0.5 * (d + d.transpose()).eval();
   return d;
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

@@ -8,6 +8,7 @@
 
 #include <SpectralSeg/Segmentability/Contour.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -27,7 +28,8 @@ namespace internal {
 // c + d > 0: with x = d / c it is (a L(x) + b M(x)) / c, where
 // L(x) = ln(1 + x) / x and M(x) = (1 - L(x)) / x, both taken from their
 // Taylor series near x = 0 where the closed forms lose their digits.
-inline double mean_of_ratio_of_linear(double a, double b, double c, double d)
+SPECTRALSEG_INLINE double mean_of_ratio_of_linear(double a, double b, double c, double d)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const double x = d / c;
   double l, m;
@@ -43,8 +45,12 @@ inline double mean_of_ratio_of_linear(double a, double b, double c, double d)
   }
   return (a * l + b * m) / c;
 }
+#else
+;
+#endif
 
-inline void check_inner_distances(const Contour& c, const Eigen::MatrixXd& inner, const char* function)
+SPECTRALSEG_INLINE void check_inner_distances(const Contour& c, const Eigen::MatrixXd& inner, const char* function)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   check_finite(c, function);
   const Eigen::Index n = Eigen::Index(c.size());
@@ -55,6 +61,9 @@ inline void check_inner_distances(const Contour& c, const Eigen::MatrixXd& inner
   if(!inner.allFinite())
     throw Invalid_input(std::string(function) + ": an inner distance is not finite");
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -91,7 +100,8 @@ inline void check_inner_distances(const Contour& c, const Eigen::MatrixXd& inner
 ///         contour of fewer than two vertices or zero perimeter
 /// \throws Invalid_input if a coordinate or an inner distance is not finite
 ///         or `inner` is not \f$n \times n\f$
-inline std::vector<double> integrated_bending_scores(const Contour& c, const Eigen::MatrixXd& inner)
+SPECTRALSEG_INLINE std::vector<double> integrated_bending_scores(const Contour& c, const Eigen::MatrixXd& inner)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_inner_distances(c, inner, "integrated_bending_scores");
   const std::size_t n = c.size();
@@ -126,6 +136,9 @@ inline std::vector<double> integrated_bending_scores(const Contour& c, const Eig
   }
   return scores;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegSegmentability
 /// \brief The two sample vertices of a contour, meant to lie on two
@@ -138,7 +151,8 @@ inline std::vector<double> integrated_bending_scores(const Contour& c, const Eig
 /// \param inner its inner distances, `inner_distances(c)`
 /// \return \f$(s, t)\f$, indices into `c`; \f$(0, 0)\f$ for a single vertex
 /// \throws Invalid_input if `c` is empty, or as `integrated_bending_scores()`
-inline std::pair<std::size_t, std::size_t> bending_samples(const Contour& c, const Eigen::MatrixXd& inner)
+SPECTRALSEG_INLINE std::pair<std::size_t, std::size_t> bending_samples(const Contour& c, const Eigen::MatrixXd& inner)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(c.empty())
     throw Invalid_input("bending_samples: the contour is empty");
@@ -148,6 +162,9 @@ inline std::pair<std::size_t, std::size_t> bending_samples(const Contour& c, con
   inner.row(Eigen::Index(s)).maxCoeff(&t);
   return {s, std::size_t(t)};
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

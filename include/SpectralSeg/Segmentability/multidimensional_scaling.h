@@ -8,6 +8,7 @@
 
 #include <SpectralSeg/Segmentability/Contour.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -46,7 +47,8 @@ namespace Segmentability {
 ///         an empty matrix, the origin for a 1 x 1 matrix
 /// \throws Invalid_input if the matrix is not square or has a non-finite
 ///         entry
-inline Contour multidimensional_scaling(const Eigen::MatrixXd& distances)
+SPECTRALSEG_INLINE Contour multidimensional_scaling(const Eigen::MatrixXd& distances)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(distances.rows() != distances.cols())
     throw Invalid_input("multidimensional_scaling: the distance matrix is " + std::to_string(distances.rows()) +
@@ -85,6 +87,9 @@ inline Contour multidimensional_scaling(const Eigen::MatrixXd& distances)
       p.y() = -p.y();
   return points;
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

@@ -7,6 +7,7 @@
 #define SPECTRALSEG_SEGMENTABILITY_PRINCIPAL_CURVATURES_H
 
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -54,7 +55,8 @@ struct Principal_curvatures
 /// Vertices with no interior edge around them get zero curvatures and
 /// directions. Costs one pass over the edges and one 3x3 eigenproblem per
 /// vertex.
-inline Principal_curvatures principal_curvatures(const Dual_graph& graph)
+SPECTRALSEG_INLINE Principal_curvatures principal_curvatures(const Dual_graph& graph)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Mesh_geometry& g = graph.geometry();
   const std::size_t nv = g.number_of_vertices();
@@ -124,6 +126,9 @@ inline Principal_curvatures principal_curvatures(const Dual_graph& graph)
   }
   return c;
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

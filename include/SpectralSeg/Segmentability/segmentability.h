@@ -15,6 +15,7 @@
 #include <SpectralSeg/Segmentability/multidimensional_scaling.h>
 #include <SpectralSeg/Segmentability/principal_curvatures.h>
 #include <SpectralSeg/Segmentability/spectral_projection.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <array>
@@ -87,10 +88,11 @@ namespace internal {
 // (L, then L-MDS) scores above `structure_fallback` (below the threshold;
 // not with `require_agreement`), that test passes after all (the scores
 // of every test run are kept).
-inline Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
-                                                 const Segmentability_options& options,
-                                                 const SpectralSeg::internal::Elimination_permutation& vertex_order,
-                                                 double structure_fallback = std::numeric_limits<double>::infinity())
+SPECTRALSEG_INLINE Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
+                                                             const Segmentability_options& options,
+                                                             const SpectralSeg::internal::Elimination_permutation& vertex_order,
+                                                             double structure_fallback = std::numeric_limits<double>::infinity())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Segmentability_result r;
   r.score = 0.;
@@ -197,6 +199,9 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
   }
   return fallback ? fall_back() : r;
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -212,11 +217,15 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
 /// \param piece a connected piece
 /// \param curvatures the mesh's principal curvatures (needed for the M tests)
 /// \param options \f$\eta\f$, modes and the contour and solver parameters
-inline Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
-                                                 const Segmentability_options& options = Segmentability_options())
+SPECTRALSEG_INLINE Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
+                                                             const Segmentability_options& options = Segmentability_options())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return internal::test_segmentability(piece, curvatures, options, SpectralSeg::internal::Elimination_permutation());
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegSegmentability
 /// \brief Pairs of sample faces of a piece, the first of them the thesis's
@@ -234,8 +243,9 @@ inline Segmentability_result test_segmentability(const Mesh_piece& piece, const 
 /// \param count at most this many pairs (at least one is returned)
 /// \return pairs of local faces; the two faces of a pair may coincide on
 ///         degenerate contours
-inline std::vector<std::pair<Mesh_piece::size_type, Mesh_piece::size_type>>
+SPECTRALSEG_INLINE std::vector<std::pair<Mesh_piece::size_type, Mesh_piece::size_type>>
 bending_sample_face_pairs(const Mesh_piece& piece, const Segmentability_result& result, std::size_t count)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const bool normalized = result.test == Test::structure_normalized || result.test == Test::geometry_normalized;
   const Contour& c = normalized ? result.contour.normalized : result.contour.contour;
@@ -301,6 +311,9 @@ bending_sample_face_pairs(const Mesh_piece& piece, const Segmentability_result& 
   }
   return pairs;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegSegmentability
 /// \brief The two sample faces of a segmentable piece (thesis 6.3.3): on the
@@ -312,11 +325,15 @@ bending_sample_face_pairs(const Mesh_piece& piece, const Segmentability_result& 
 ///
 /// \return two local faces; they may coincide on degenerate contours
 /// (with no passing test, from the contour of the last test run)
-inline std::pair<Mesh_piece::size_type, Mesh_piece::size_type>
+SPECTRALSEG_INLINE std::pair<Mesh_piece::size_type, Mesh_piece::size_type>
 bending_sample_faces(const Mesh_piece& piece, const Segmentability_result& result)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return bending_sample_face_pairs(piece, result, 1).front();
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

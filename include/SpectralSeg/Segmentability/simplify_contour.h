@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Segmentability/Contour.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -25,8 +26,9 @@ namespace internal {
 
 // Relevance of the vertex b between a and c in discrete curve evolution:
 // turn angle times l1 l2 / (l1 + l2), lengths divided by `length_unit`.
-inline double dce_relevance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                            double length_unit)
+SPECTRALSEG_INLINE double dce_relevance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                                        double length_unit)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Vector2d u = b - a, v = c - b;
   const double l1 = u.norm() / length_unit, l2 = v.norm() / length_unit;
@@ -36,6 +38,9 @@ inline double dce_relevance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, 
   const double turn = std::atan2(std::abs(cross), u.dot(v)); // in [0, pi]
   return turn * l1 * l2 / (l1 + l2);
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -61,7 +66,8 @@ inline double dce_relevance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, 
 ///         `c` (made counter-clockwise) if it has at most `vertices` points
 /// \throws Invalid_input if a coordinate is not finite or `vertices` is
 ///         smaller than 3
-inline Contour simplify_contour(const Contour& c, std::size_t vertices = 50)
+SPECTRALSEG_INLINE Contour simplify_contour(const Contour& c, std::size_t vertices = 50)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_finite(c, "simplify_contour");
   if(vertices < 3)
@@ -114,6 +120,9 @@ inline Contour simplify_contour(const Contour& c, std::size_t vertices = 50)
   internal::make_counterclockwise(simplified);
   return simplified;
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

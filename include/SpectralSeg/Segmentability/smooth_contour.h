@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Segmentability/Contour.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -22,7 +23,8 @@ namespace Segmentability {
 namespace internal {
 
 // Mean distance between corresponding points of two contours of equal size.
-inline double mean_distance(const Contour& a, const Contour& b)
+SPECTRALSEG_INLINE double mean_distance(const Contour& a, const Contour& b)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(a.empty())
     return 0.;
@@ -31,6 +33,9 @@ inline double mean_distance(const Contour& a, const Contour& b)
     sum += (a[k] - b[k]).norm();
   return sum / double(a.size());
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -61,7 +66,8 @@ inline double mean_distance(const Contour& a, const Contour& b)
 ///         fewer than three points or all its points are equal
 /// \throws Invalid_input if a coordinate is not finite or `relative_error`
 ///         is negative or not finite
-inline Contour smooth_contour(const Contour& c, double relative_error = 0.005)
+SPECTRALSEG_INLINE Contour smooth_contour(const Contour& c, double relative_error = 0.005)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_finite(c, "smooth_contour");
   if(!(relative_error >= 0.) || !std::isfinite(relative_error))
@@ -111,6 +117,9 @@ inline Contour smooth_contour(const Contour& c, double relative_error = 0.005)
   internal::make_counterclockwise(smoothed);
   return smoothed;
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

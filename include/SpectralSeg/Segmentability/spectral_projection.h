@@ -11,6 +11,7 @@
 #include <SpectralSeg/Segmentability/principal_curvatures.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/Fill_reducing_order.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -89,9 +90,10 @@ struct Planar_projection
 ///   \f$\epsilon\f$ is only meaningful against a scale-free weight).
 ///
 /// \pre for `Projection::geometry`, `curvatures` holds the mesh's curvatures
-inline Eigen::SparseMatrix<double> projection_operator(const Mesh_piece& piece, Projection which,
-                                                       const Principal_curvatures* curvatures,
-                                                       const Projection_options& options = Projection_options())
+SPECTRALSEG_INLINE Eigen::SparseMatrix<double> projection_operator(const Mesh_piece& piece, Projection which,
+                                                                   const Principal_curvatures* curvatures,
+                                                                   const Projection_options& options = Projection_options())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = piece.number_of_vertices();
   const auto edges = piece.vertex_edges();
@@ -145,6 +147,9 @@ inline Eigen::SparseMatrix<double> projection_operator(const Mesh_piece& piece, 
   m.setFromTriplets(t.begin(), t.end());
   return m;
 }
+#else
+;
+#endif
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -185,9 +190,10 @@ private:
 // spectral_projection() with the sparse factorisations in the elimination
 // order `vertex_order` of the piece's vertices (empty: their approximate
 // minimum degree order)
-inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection which,
-                                             const Principal_curvatures* curvatures, const Projection_options& options,
-                                             const SpectralSeg::internal::Elimination_permutation& vertex_order)
+SPECTRALSEG_INLINE Planar_projection spectral_projection(const Mesh_piece& piece, Projection which,
+                                                         const Principal_curvatures* curvatures, const Projection_options& options,
+                                                         const SpectralSeg::internal::Elimination_permutation& vertex_order)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = piece.number_of_vertices();
   Planar_projection p;
@@ -270,6 +276,9 @@ inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection
   }
   return p;
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -291,12 +300,16 @@ inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection
 /// \param curvatures the mesh's principal curvatures (for M)
 /// \param options solver parameters
 /// \throws Error if the eigensolver does not converge
-inline Planar_projection spectral_projection(const Mesh_piece& piece, Projection which,
-                                             const Principal_curvatures* curvatures,
-                                             const Projection_options& options = Projection_options())
+SPECTRALSEG_INLINE Planar_projection spectral_projection(const Mesh_piece& piece, Projection which,
+                                                         const Principal_curvatures* curvatures,
+                                                         const Projection_options& options = Projection_options())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return internal::spectral_projection(piece, which, curvatures, options, SpectralSeg::internal::Elimination_permutation());
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

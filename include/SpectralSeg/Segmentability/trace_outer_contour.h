@@ -8,6 +8,7 @@
 
 #include <SpectralSeg/Segmentability/Contour.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -42,8 +43,9 @@ struct Binary_raster
 // (conservative rasterisation by the separating axis test: the two raster
 // axes through the pixel range, the three edge normals per pixel). A
 // degenerate triangle marks the pixels its segment passes through.
-inline void draw_triangle_conservatively(Binary_raster& raster, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                                         const Eigen::Vector2d& c)
+SPECTRALSEG_INLINE void draw_triangle_conservatively(Binary_raster& raster, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                                     const Eigen::Vector2d& c)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Vector2d lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
   const int i0 = std::max(0, int(std::ceil(lo.x() - 0.5))), i1 = std::min(raster.size - 1, int(std::floor(hi.x() + 0.5)));
@@ -79,16 +81,24 @@ inline void draw_triangle_conservatively(Binary_raster& raster, const Eigen::Vec
         raster.at(i, j) = 1;
     }
 }
+#else
+;
+#endif
 
 // The eight neighbours, counter-clockwise from east (y up).
-inline const std::array<std::array<int, 2>, 8>& moore_offsets()
+SPECTRALSEG_INLINE const std::array<std::array<int, 2>, 8>& moore_offsets()
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   static const std::array<std::array<int, 2>, 8> offsets = {
       {{{1, 0}}, {{1, 1}}, {{0, 1}}, {{-1, 1}}, {{-1, 0}}, {{-1, -1}}, {{0, -1}}, {{1, -1}}}};
   return offsets;
 }
+#else
+;
+#endif
 
-inline int moore_index(int di, int dj)
+SPECTRALSEG_INLINE int moore_index(int di, int dj)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const auto& offsets = moore_offsets();
   for(int k = 0; k < 8; ++k)
@@ -96,11 +106,15 @@ inline int moore_index(int di, int dj)
       return k;
   return -1;
 }
+#else
+;
+#endif
 
 // Keeps only the largest 8-connected black region (ties: the one met first
 // in row order). Returns its first pixel in row order (lowest row, then
 // leftmost), or {-1, -1} if the raster is white.
-inline std::array<int, 2> keep_largest_region(Binary_raster& raster)
+SPECTRALSEG_INLINE std::array<int, 2> keep_largest_region(Binary_raster& raster)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const int s = raster.size;
   std::vector<int> region(raster.black.size(), -1);
@@ -143,11 +157,15 @@ inline std::array<int, 2> keep_largest_region(Binary_raster& raster)
     raster.black[id] = region[id] == best ? 1 : 0;
   return firsts[std::size_t(best)];
 }
+#else
+;
+#endif
 
 // Moore-neighbour tracing of the outer boundary of the 8-connected region
 // whose lowest-leftmost pixel is `start`. Stops when the first move is
 // about to be repeated. Pixels on one-pixel-wide necks appear twice.
-inline std::vector<std::array<int, 2>> moore_trace(const Binary_raster& raster, std::array<int, 2> start)
+SPECTRALSEG_INLINE std::vector<std::array<int, 2>> moore_trace(const Binary_raster& raster, std::array<int, 2> start)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const auto& offsets = moore_offsets();
   auto black = [&](int i, int j) { return raster.inside(i, j) && raster.at(i, j) != 0; };
@@ -188,6 +206,9 @@ inline std::vector<std::array<int, 2>> moore_trace(const Binary_raster& raster, 
   }
   return boundary;
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond
@@ -220,9 +241,10 @@ inline std::vector<std::array<int, 2>> moore_trace(const Binary_raster& raster, 
 ///         same point
 /// \throws Invalid_input if a point is not finite, an index is out of
 ///         range, or `resolution` is smaller than 8
-inline Contour trace_outer_contour(const std::vector<Eigen::Vector2d>& points,
-                                   const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                                   std::size_t resolution = 200)
+SPECTRALSEG_INLINE Contour trace_outer_contour(const std::vector<Eigen::Vector2d>& points,
+                                               const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                               std::size_t resolution = 200)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(resolution < 8 || resolution > 100000)
     throw Invalid_input("trace_outer_contour: the resolution must be in [8, 100000], got " +
@@ -270,6 +292,9 @@ inline Contour trace_outer_contour(const std::vector<Eigen::Vector2d>& points,
   internal::make_counterclockwise(contour);
   return contour;
 }
+#else
+;
+#endif
 
 } // namespace Segmentability
 } // namespace SpectralSeg

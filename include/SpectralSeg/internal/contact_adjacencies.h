@@ -9,6 +9,7 @@
 
 #include <SpectralSeg/Mesh_geometry.h>
 #include <SpectralSeg/internal/Point_neighbours.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -38,9 +39,10 @@ struct Contact
 // contact per pair of faces. Then the specks, parts with less than
 // `speck_area_fraction` of the area, are linked to the nearest other part,
 // smallest first, until none is left apart. Deterministic.
-inline std::vector<Contact> contact_adjacencies(const Mesh_geometry& geo,
-                                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& adjacent,
-                                                double gap, double speck_area_fraction)
+SPECTRALSEG_INLINE std::vector<Contact> contact_adjacencies(const Mesh_geometry& geo,
+                                                            const std::vector<std::pair<std::uint32_t, std::uint32_t>>& adjacent,
+                                                            double gap, double speck_area_fraction)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t nf = geo.number_of_faces();
   const std::size_t nv = geo.points.size();
@@ -226,6 +228,9 @@ inline std::vector<Contact> contact_adjacencies(const Mesh_geometry& geo,
             out.end());
   return out;
 }
+#else
+;
+#endif
 
 } // namespace internal
 } // namespace SpectralSeg

@@ -15,6 +15,7 @@
 #include <SpectralSeg/Refinement/merge_segments.h>
 #include <SpectralSeg/Refinement/sharp_crease_share.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,10 +37,14 @@ constexpr std::size_t default_reference_faces = 50000;
 // The exponent of the merge's embedding-separation factor for a mesh whose
 // sharp_crease_share() is `share` (see K_way_options::merge_separation_scale):
 // 1 up to 0.3, 0 from 0.6, linear in between.
-inline double separation_exponent(double share)
+SPECTRALSEG_INLINE double separation_exponent(double share)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return std::max(0., std::min(1., (0.6 - share) / 0.3));
 }
+#else
+;
+#endif
 
 // Merges adjacent segments, weakest boundary first: segments under
 // `small` area first (smallest first, whatever their boundary), then the
@@ -56,13 +61,14 @@ inline double separation_exponent(double share)
 // The concave angles are those of Refinement::concave_angle_weights() at
 // `reference_faces` (0: the mesh's own resolution), or `given_angles` when
 // not null (those angles, made once for several merges).
-inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
-                                     std::vector<int>& labels, std::size_t min_segments, double limit,
-                                     double min_area_fraction,
-                                     const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
-                                     double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr,
-                                     std::size_t reference_faces = 0,
-                                     const std::vector<double>* given_angles = nullptr)
+SPECTRALSEG_INLINE std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
+                                                 std::vector<int>& labels, std::size_t min_segments, double limit,
+                                                 double min_area_fraction,
+                                                 const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
+                                                 double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr,
+                                                 std::size_t reference_faces = 0,
+                                                 const std::vector<double>* given_angles = nullptr)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   // the concave angles at the reference resolution (the mesh's own up to it)
   const std::vector<double> own =
@@ -105,6 +111,9 @@ inline std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<
                                                                                             : nullptr,
     history, &angles);
 }
+#else
+;
+#endif
 
 // The embedding-separation factor of a merge on `coordinates` with
 // `k_way`'s scale (none when the scale is 0), its exponent from the mesh's
@@ -126,14 +135,18 @@ Refinement::Embedding_separation merge_separation(const Weighted_dual_graph& gra
 
 // A merge's history into `*keep` (for hierarchy_from_merges() later), or
 // without `keep` made into `r.hierarchy` now.
-inline void keep_merges(const Weighted_dual_graph& graph, Refinement::internal::Merge_history&& history,
-                        K_way_result& r, Refinement::internal::Merge_history* keep)
+SPECTRALSEG_INLINE void keep_merges(const Weighted_dual_graph& graph, Refinement::internal::Merge_history&& history,
+                                    K_way_result& r, Refinement::internal::Merge_history* keep)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(keep)
     *keep = std::move(history);
   else
     r.hierarchy = hierarchy_from_merges(history.labels, graph.graph().geometry().areas, history.steps, history.answer);
 }
+#else
+;
+#endif
 
 // What the contrast merges of one mesh share: the regions bounded by
 // closed loops of concave creases (empty when `k_way.crease_angle` finds

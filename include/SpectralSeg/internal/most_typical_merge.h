@@ -11,6 +11,7 @@
 #include <SpectralSeg/K_way_options.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/internal/merge_by_contrast.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -27,8 +28,9 @@ namespace internal {
 // The area-weighted Rand distance between two labellings with labels
 // 0 .. a-1 and 0 .. b-1: the area-weighted share of pairs of points of the
 // surface that one puts in the same segment and the other does not.
-inline double rand_distance(const std::vector<int>& x, std::size_t a, const std::vector<int>& y, std::size_t b,
-                            const std::vector<double>& area)
+SPECTRALSEG_INLINE double rand_distance(const std::vector<int>& x, std::size_t a, const std::vector<int>& y, std::size_t b,
+                                        const std::vector<double>& area)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<double> ax(a, 0.), ay(b, 0.), axy(a * b, 0.);
   double total = 0.;
@@ -48,12 +50,16 @@ inline double rand_distance(const std::vector<int>& x, std::size_t a, const std:
     sxy += v * v;
   return total > 0. ? std::max(0., sx + sy - 2. * sxy) / (total * total) : 0.;
 }
+#else
+;
+#endif
 
 // The index of the medoid of `labellings` (each with `counts[i]` labels):
 // the one whose summed rand_distance() to the others is smallest (ties:
 // the first).
-inline std::size_t medoid_labelling(const std::vector<std::vector<int>>& labellings,
-                                    const std::vector<std::size_t>& counts, const std::vector<double>& area)
+SPECTRALSEG_INLINE std::size_t medoid_labelling(const std::vector<std::vector<int>>& labellings,
+                                                const std::vector<std::size_t>& counts, const std::vector<double>& area)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t m = labellings.size();
   std::vector<double> sum(m, 0.);
@@ -66,6 +72,9 @@ inline std::size_t medoid_labelling(const std::vector<std::vector<int>>& labelli
     }
   return std::size_t(std::min_element(sum.begin(), sum.end()) - sum.begin());
 }
+#else
+;
+#endif
 
 // Coarser over-segmentations of K-means clusters `base` (labels 0 ..
 // c-1 on the rows of `points`): the clusters' centroids are joined by
@@ -74,11 +83,12 @@ inline std::size_t medoid_labelling(const std::vector<std::vector<int>>& labelli
 // (descending, each below c), and K-means is run again from the point
 // nearest each joined centroid (ties: the smallest index). One K-means
 // result per size.
-inline std::vector<Clustering::Kmeans_result> coarser_clusterings(const Eigen::MatrixXd& points,
-                                                                  const std::vector<int>& base, std::size_t c,
-                                                                  const std::vector<std::size_t>& sizes,
-                                                                  std::size_t max_iterations, std::size_t sample_limit,
-                                                                  const Execution& exec)
+SPECTRALSEG_INLINE std::vector<Clustering::Kmeans_result> coarser_clusterings(const Eigen::MatrixXd& points,
+                                                                              const std::vector<int>& base, std::size_t c,
+                                                                              const std::vector<std::size_t>& sizes,
+                                                                              std::size_t max_iterations, std::size_t sample_limit,
+                                                                              const Execution& exec)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = base.size();
   std::vector<double> weight(c, 0.);
@@ -151,6 +161,9 @@ inline std::vector<Clustering::Kmeans_result> coarser_clusterings(const Eigen::M
   }
   return out;
 }
+#else
+;
+#endif
 
 // The contrast merge of segment_hybrid() (merge_clusters_by_contrast()
 // with these settings) on the most typical of `count` over-segmentations:

@@ -5,6 +5,7 @@
 
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/internal/parallel_for.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -17,7 +18,8 @@ namespace internal {
 typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
 
 // Mean of the finite entries (distances to other components are infinite).
-inline double mean_finite(const Row_matrix& g)
+SPECTRALSEG_INLINE double mean_finite(const Row_matrix& g)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   double sum = 0.;
   std::size_t count = 0;
@@ -34,6 +36,9 @@ inline double mean_finite(const Row_matrix& g)
   }
   return count ? sum / double(count) : 0.;
 }
+#else
+;
+#endif
 
 // Turns distances into affinities in place; returns the kernel width.
 template <typename Kernel>

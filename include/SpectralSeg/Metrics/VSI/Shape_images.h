@@ -11,6 +11,7 @@
 #include <SpectralSeg/Metrics/VSI/spread_samples.h>
 #include <SpectralSeg/internal/Point_neighbours.h>
 #include <SpectralSeg/internal/parallel_for.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
 
@@ -145,7 +146,8 @@ Shape_images compute_shape_images(const std::vector<Eigen::Vector3d>& reference_
 /// \f$d_k < u + 2s\f$ and 0 otherwise (all weights are 1 when \f$s = 0\f$),
 /// and the difference is \f$\sum_k w_k d_k / \sum_k w_k\f$.
 /// Returns `NaN` when no pair is measured in both images.
-inline double image_difference(const float* a, const float* b, std::size_t m)
+SPECTRALSEG_INLINE double image_difference(const float* a, const float* b, std::size_t m)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   double d[512];
   std::vector<double> big;
@@ -187,6 +189,9 @@ inline double image_difference(const float* a, const float* b, std::size_t m)
   }
   return den > 0 ? num / den : mean;
 }
+#else
+;
+#endif
 
 } // namespace VSI
 } // namespace Metrics

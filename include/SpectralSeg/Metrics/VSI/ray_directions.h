@@ -6,6 +6,7 @@
 #ifndef SPECTRALSEG_METRICS_VSI_RAY_DIRECTIONS_H
 #define SPECTRALSEG_METRICS_VSI_RAY_DIRECTIONS_H
 
+#include <SpectralSeg/internal/separate_compilation.h>
 #include <CGAL/number_type_config.h>
 
 #include <Eigen/Core>
@@ -24,7 +25,8 @@ namespace VSI {
 /// `opening_angle` (radians) around the +z axis: the first is the axis
 /// itself, the others follow a golden-angle spiral, evenly spread in solid
 /// angle, the last one on the cone's rim. Rotate them with `rotate_to()`.
-inline std::vector<Eigen::Vector3d> cone_directions(std::size_t count, double opening_angle)
+SPECTRALSEG_INLINE std::vector<Eigen::Vector3d> cone_directions(std::size_t count, double opening_angle)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<Eigen::Vector3d> d;
   if(count == 0)
@@ -41,11 +43,15 @@ inline std::vector<Eigen::Vector3d> cone_directions(std::size_t count, double op
   }
   return d;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegVSI
 /// \brief Rotates directions given around +z so that +z maps to the unit vector `axis`.
-inline void rotate_to(const Eigen::Vector3d& axis, const std::vector<Eigen::Vector3d>& local,
-                      std::vector<Eigen::Vector3d>& out)
+SPECTRALSEG_INLINE void rotate_to(const Eigen::Vector3d& axis, const std::vector<Eigen::Vector3d>& local,
+                                  std::vector<Eigen::Vector3d>& out)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Vector3d w = axis.normalized();
   const Eigen::Vector3d helper = std::abs(w.x()) < 0.6 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
@@ -55,13 +61,17 @@ inline void rotate_to(const Eigen::Vector3d& axis, const std::vector<Eigen::Vect
   for(std::size_t i = 0; i < local.size(); ++i)
     out[i] = local[i].x() * u + local[i].y() * v + local[i].z() * w;
 }
+#else
+;
+#endif
 
 /// \ingroup PkgSpectralSegVSI
 /// \brief `2 * pairs` fixed global unit directions, stored as antipodal
 /// pairs (`d[2k+1] == -d[2k]`). The first of each pair follows a
 /// Fibonacci spiral on the upper half-sphere, so that together they cover
 /// the whole sphere evenly.
-inline std::vector<Eigen::Vector3d> antipodal_directions(std::size_t pairs)
+SPECTRALSEG_INLINE std::vector<Eigen::Vector3d> antipodal_directions(std::size_t pairs)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<Eigen::Vector3d> d;
   const double golden = CGAL_PI * (3. - std::sqrt(5.));
@@ -76,6 +86,9 @@ inline std::vector<Eigen::Vector3d> antipodal_directions(std::size_t pairs)
   }
   return d;
 }
+#else
+;
+#endif
 
 } // namespace VSI
 } // namespace Metrics

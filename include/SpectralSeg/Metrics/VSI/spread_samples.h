@@ -5,6 +5,7 @@
 #ifndef SPECTRALSEG_METRICS_VSI_SPREAD_SAMPLES_H
 #define SPECTRALSEG_METRICS_VSI_SPREAD_SAMPLES_H
 
+#include <SpectralSeg/internal/separate_compilation.h>
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -21,7 +22,8 @@ namespace VSI {
 /// \brief Chooses about `count` points spread over space: the points are
 /// ordered along a Morton (Z-order) curve over their bounding box and taken
 /// at regular steps. Deterministic; returns sorted indices.
-inline std::vector<std::uint32_t> spread_samples(const std::vector<Eigen::Vector3d>& points, std::size_t count)
+SPECTRALSEG_INLINE std::vector<std::uint32_t> spread_samples(const std::vector<Eigen::Vector3d>& points, std::size_t count)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = points.size();
   std::vector<std::uint32_t> all(n);
@@ -59,6 +61,9 @@ inline std::vector<std::uint32_t> spread_samples(const std::vector<Eigen::Vector
   picked.erase(std::unique(picked.begin(), picked.end()), picked.end());
   return picked;
 }
+#else
+;
+#endif
 
 } // namespace VSI
 } // namespace Metrics

@@ -1,0 +1,31 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+/// \file separate_compilation.h
+/// \brief Header-only or separately compiled: the two macros that decide
+/// where the library's non-template functions are compiled.
+#ifndef SPECTRALSEG_INTERNAL_SEPARATE_COMPILATION_H
+#define SPECTRALSEG_INTERNAL_SEPARATE_COMPILATION_H
+
+/// \cond SKIP_IN_MANUAL
+// Header-only (the default): every function is defined inline in its header.
+//
+// With SPECTRALSEG_SEPARATE_COMPILATION defined, the non-template functions
+// whose bodies instantiate the eigensolvers, K-means, the graph cut and
+// chapter 6's tests are only declared in the headers, and defined once in
+// src/spectralseg_compiled.cpp (CMake target SpectralSeg::Compiled), which
+// defines SPECTRALSEG_COMPILING_LIBRARY as well. Results are the same either
+// way; a program made of many translation units compiles much less.
+#if defined(SPECTRALSEG_SEPARATE_COMPILATION)
+#  define SPECTRALSEG_INLINE
+#  if defined(SPECTRALSEG_COMPILING_LIBRARY)
+#    define SPECTRALSEG_DEFINE_FUNCTIONS 1
+#  else
+#    define SPECTRALSEG_DEFINE_FUNCTIONS 0
+#  endif
+#else
+#  define SPECTRALSEG_INLINE inline
+#  define SPECTRALSEG_DEFINE_FUNCTIONS 1
+#endif
+/// \endcond
+
+#endif // SPECTRALSEG_INTERNAL_SEPARATE_COMPILATION_H
