@@ -33,7 +33,8 @@ command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ not found: run 'bash s
 BUILD=build-fuzz
 CXX=clang++ nice -n 15 cmake -S . -B $BUILD -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPECTRALSEG_BUILD_FUZZERS=ON \
   -DSPECTRALSEG_BUILD_TOOLS=OFF -DSPECTRALSEG_BUILD_TESTS=OFF -DSPECTRALSEG_BUILD_EXAMPLES=OFF \
-  -DSPECTRALSEG_BUILD_BENCHMARKS=OFF -DSPECTRALSEG_BUILD_PYTHON=OFF >/dev/null
+  -DSPECTRALSEG_BUILD_BENCHMARKS=OFF -DSPECTRALSEG_BUILD_PYTHON=OFF \
+  -DSPECTRALSEG_SEPARATE_COMPILATION=OFF >/dev/null   # header-only: all the code a target runs is instrumented
 # every target: `all`, compiled in parallel (CMake's Makefiles build named targets one after the other)
 if [ ${#TARGETS[@]} -eq ${#ALL[@]} ]; then
   nice -n 15 cmake --build $BUILD -j "$BUILD_JOBS"

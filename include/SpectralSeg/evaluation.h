@@ -253,7 +253,8 @@ SPECTRALSEG_INLINE void check_graph_labels(const Dual_graph& graph, const std::v
 #endif
 
 // the faces with at least one neighbour of another label
-SPECTRALSEG_INLINE std::vector<Dual_graph::size_type> boundary_faces(const Dual_graph& graph, const std::vector<int>& labels)
+SPECTRALSEG_INLINE std::vector<Dual_graph::size_type> boundary_faces(const Dual_graph& graph,
+                                                                     const std::vector<int>& labels)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<Dual_graph::size_type> out;

@@ -73,7 +73,8 @@ void kmeans_clusters(std::size_t k, const Basic_K_way_options<AffinityKernel>& o
 
 // The mean embedding coordinates of each of the `m` segments of `labels`
 // (one row per segment), the proxies of the graph cut after a merge.
-SPECTRALSEG_INLINE Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const std::vector<int>& labels, std::size_t m)
+SPECTRALSEG_INLINE Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const std::vector<int>& labels,
+                                                std::size_t m)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Eigen::MatrixXd proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), coordinates.cols());

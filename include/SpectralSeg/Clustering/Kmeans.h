@@ -41,7 +41,8 @@ struct Kmeans_result
 /// approximate diameter (from point `start`, hop to the farthest point until
 /// the pair is stable), each next one the point farthest from all chosen
 /// ones. Ties go to the smallest index.
-SPECTRALSEG_INLINE std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd& points, std::size_t k, std::size_t start = 0)
+SPECTRALSEG_INLINE std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd& points, std::size_t k,
+                                                          std::size_t start = 0)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Index n = points.rows();
@@ -291,9 +292,9 @@ SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, 
 /// rounds on all the points.
 ///
 /// \throws Invalid_input if `k` is 0 or exceeds the number of points
-SPECTRALSEG_INLINE Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k, std::vector<std::size_t> seeds = {},
-                                        std::size_t max_iterations = 100, const Execution& exec = Execution(),
-                                        std::size_t sample_limit = 0)
+SPECTRALSEG_INLINE Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k,
+                                        std::vector<std::size_t> seeds = {}, std::size_t max_iterations = 100,
+                                        const Execution& exec = Execution(), std::size_t sample_limit = 0)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = static_cast<std::size_t>(points.rows());

@@ -81,8 +81,8 @@ SPECTRALSEG_INLINE std::vector<Eigen::Index> kept_columns(const Eigen::VectorXd&
 #endif
 
 // U = V(:, kept) * sqrt(lambda(kept)), the columns of kept_columns().
-SPECTRALSEG_INLINE void scaled_columns(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors, std::size_t dimensions,
-                                       Spectral_embedding& out)
+SPECTRALSEG_INLINE void scaled_columns(const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors,
+                                       std::size_t dimensions, Spectral_embedding& out)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::vector<Eigen::Index> kept = kept_columns(values, dimensions, out);

@@ -32,7 +32,8 @@ namespace Embedding {
 ///
 /// \param rows the affinity rows of the samples (samples x faces)
 /// \param samples the sampled faces, in the order of `rows`
-SPECTRALSEG_INLINE double nystrom_gamma(const internal::Row_matrix& rows, const std::vector<Dual_graph::size_type>& samples)
+SPECTRALSEG_INLINE double nystrom_gamma(const internal::Row_matrix& rows,
+                                        const std::vector<Dual_graph::size_type>& samples)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Index l = static_cast<Eigen::Index>(samples.size());

@@ -50,7 +50,8 @@ struct VSI_result
 /// computable edge at all, every weight is 0. `filled` receives the number
 /// of such edges.
 SPECTRALSEG_INLINE std::vector<double> vsi_edge_weights(const Dual_graph& graph, const VSI::Shape_images& images,
-                                                        const Execution& exec = Execution(), std::size_t* filled = nullptr)
+                                                        const Execution& exec = Execution(),
+                                                        std::size_t* filled = nullptr)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t ne = graph.number_of_edges();

@@ -42,7 +42,8 @@ namespace Refinement {
 /// \param angle_scale \f$s\f$, in radians; positive
 /// \throws Invalid_input if `labels` does not have one entry per face or
 ///         `angle_scale` is not a positive number
-SPECTRALSEG_INLINE double concave_normalized_cut(const Dual_graph& graph, const std::vector<int>& labels, double angle_scale)
+SPECTRALSEG_INLINE double concave_normalized_cut(const Dual_graph& graph, const std::vector<int>& labels,
+                                                 double angle_scale)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(labels.size() != graph.number_of_faces())

@@ -42,7 +42,8 @@ namespace Refinement {
 ///        or more, gives one region per connected component
 /// \param region one region number per face (output)
 /// \throws Invalid_input if `min_angle_degrees` is not a number
-SPECTRALSEG_INLINE std::size_t crease_regions(const Dual_graph& graph, double min_angle_degrees, std::vector<int>& region)
+SPECTRALSEG_INLINE std::size_t crease_regions(const Dual_graph& graph, double min_angle_degrees,
+                                              std::vector<int>& region)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(std::isnan(min_angle_degrees))

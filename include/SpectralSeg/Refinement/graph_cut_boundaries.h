@@ -177,7 +177,8 @@ void dijkstra_within_segments(const Dual_graph& graph, const std::vector<int>& l
 // area of the segment's boundary (geodesic distance between face centres
 // over the dual graph, from the faces on the boundary) and in the half of
 // the segment nearest it, 0 for the others.
-SPECTRALSEG_INLINE std::vector<char> boundary_band(const Dual_graph& graph, const std::vector<int>& labels, double width)
+SPECTRALSEG_INLINE std::vector<char> boundary_band(const Dual_graph& graph, const std::vector<int>& labels,
+                                                   double width)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = graph.number_of_faces();
@@ -486,8 +487,8 @@ SPECTRALSEG_INLINE Graph_cut_problem graph_cut_problem(const Dual_graph& graph, 
 // Runs the alpha expansion of `cut` (made by graph_cut_problem() for
 // `labels`) on `threads` threads (the same result on any number) and
 // writes its labels of the variables into `labels`.
-SPECTRALSEG_INLINE void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labels, const Graph_cut_options& options,
-                                        unsigned threads = 1)
+SPECTRALSEG_INLINE void solve_graph_cut(const Graph_cut_problem& cut, std::vector<int>& labels,
+                                        const Graph_cut_options& options, unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Potts_problem& problem = cut.problem;

@@ -279,8 +279,9 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
 
 // merge_weakest_boundaries() without its checks, recording its merges in
 // `history` (see merge_cheapest_boundaries()).
-SPECTRALSEG_INLINE std::size_t merge_weakest(const Dual_graph& graph, const std::vector<double>& weights, std::vector<int>& labels,
-                                             std::size_t k, double strength_limit, double min_area_fraction, double size_exponent,
+SPECTRALSEG_INLINE std::size_t merge_weakest(const Dual_graph& graph, const std::vector<double>& weights,
+                                             std::vector<int>& labels, std::size_t k, double strength_limit,
+                                             double min_area_fraction, double size_exponent,
                                              const Embedding_separation& separation, Merge_history* history = nullptr)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {

@@ -53,8 +53,9 @@ struct Vertex_faces
 
 // Ring distance (through shared vertices) from the seed faces, up to `rings`;
 // faces farther away keep `unreached`.
-SPECTRALSEG_INLINE void ring_distances(const Mesh_piece& piece, const Vertex_faces& vf, const std::vector<std::uint32_t>& seeds,
-                                       std::size_t rings, std::vector<std::uint32_t>& dist, std::vector<std::uint32_t>& touched)
+SPECTRALSEG_INLINE void ring_distances(const Mesh_piece& piece, const Vertex_faces& vf,
+                                       const std::vector<std::uint32_t>& seeds, std::size_t rings,
+                                       std::vector<std::uint32_t>& dist, std::vector<std::uint32_t>& touched)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::uint32_t unreached = std::numeric_limits<std::uint32_t>::max();
@@ -160,7 +161,8 @@ SPECTRALSEG_INLINE std::vector<std::uint32_t> closing_swaps(const Mesh_piece& pi
 /// \param rings radius of the structuring element (at least 1)
 /// \return the number of faces that changed side
 /// \throws Invalid_input if `side` does not have one entry per face
-SPECTRALSEG_INLINE std::size_t close_cut_boundary(const Mesh_piece& piece, std::vector<std::uint8_t>& side, std::size_t rings)
+SPECTRALSEG_INLINE std::size_t close_cut_boundary(const Mesh_piece& piece, std::vector<std::uint8_t>& side,
+                                                  std::size_t rings)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(side.size() != piece.number_of_faces())

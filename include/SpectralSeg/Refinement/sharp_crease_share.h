@@ -34,7 +34,8 @@ namespace Refinement {
 /// \param sharp_degrees the angle from which a fold counts as sharp
 /// \throws Invalid_input unless \f$0 \le\f$ `fold_degrees` \f$\le\f$
 ///         `sharp_degrees` \f$\le 180\f$
-SPECTRALSEG_INLINE double sharp_crease_share(const Dual_graph& graph, double fold_degrees = 30., double sharp_degrees = 60.)
+SPECTRALSEG_INLINE double sharp_crease_share(const Dual_graph& graph, double fold_degrees = 30.,
+                                             double sharp_degrees = 60.)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(!(fold_degrees >= 0. && fold_degrees <= sharp_degrees && sharp_degrees <= 180.))

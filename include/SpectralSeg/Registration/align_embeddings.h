@@ -76,8 +76,8 @@ SPECTRALSEG_INLINE Eigen::MatrixXd strided_rows(const Eigen::MatrixXd& m, std::s
 
 // Closest-point iterations from `source` (points as columns) onto `target`;
 // returns the accumulated transform and sets `rms`.
-SPECTRALSEG_INLINE Eigen::MatrixXd icp(const Eigen::MatrixXd& source, const Eigen::MatrixXd& target, const Alignment_options& o,
-                                       double& rms)
+SPECTRALSEG_INLINE Eigen::MatrixXd icp(const Eigen::MatrixXd& source, const Eigen::MatrixXd& target,
+                                       const Alignment_options& o, double& rms)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Index d = source.rows();

@@ -137,7 +137,8 @@ struct Ranked_shape
 /// \brief Ranks `database` by chi-square distance to `query`, nearest first;
 /// equal distances keep the database order.
 /// \throws Invalid_input if a descriptor cannot be compared to the query
-SPECTRALSEG_INLINE std::vector<Ranked_shape> rank_shapes(const Shape_descriptor& query, const std::vector<Shape_descriptor>& database)
+SPECTRALSEG_INLINE std::vector<Ranked_shape> rank_shapes(const Shape_descriptor& query,
+                                                         const std::vector<Shape_descriptor>& database)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<Ranked_shape> r;
@@ -230,7 +231,8 @@ struct Descriptor_sources
   std::vector<double> weight;
 };
 
-SPECTRALSEG_INLINE Descriptor_sources descriptor_sources(const Dual_graph& graph, std::size_t count, const Execution& exec)
+SPECTRALSEG_INLINE Descriptor_sources descriptor_sources(const Dual_graph& graph, std::size_t count,
+                                                         const Execution& exec)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::vector<double>& area = graph.geometry().areas;

@@ -230,7 +230,8 @@ SPECTRALSEG_INLINE Farthest_point_samples farthest_point_samples(const Weighted_
 /// \brief `farthest_point_samples()` from face `start`, with at most
 /// `max_hops` hops of the diameter search.
 SPECTRALSEG_INLINE Farthest_point_samples farthest_point_samples(const Weighted_dual_graph& graph, std::size_t count,
-                                                                 Dual_graph::size_type start = 0, std::size_t max_hops = 10,
+                                                                 Dual_graph::size_type start = 0,
+                                                                 std::size_t max_hops = 10,
                                                                  const Execution& exec = Execution())
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {

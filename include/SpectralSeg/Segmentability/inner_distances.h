@@ -27,7 +27,8 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Contour_kernel;
 
 // Even-odd test of a point against the closed polygon `polygon`; points on
 // the boundary may go either way.
-SPECTRALSEG_INLINE bool inside_even_odd(const std::vector<Contour_kernel::Point_2>& polygon, const Contour_kernel::Point_2& q)
+SPECTRALSEG_INLINE bool inside_even_odd(const std::vector<Contour_kernel::Point_2>& polygon,
+                                        const Contour_kernel::Point_2& q)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   bool inside = false;
@@ -66,7 +67,8 @@ SPECTRALSEG_INLINE bool cross_properly(const Contour_kernel::Point_2& p, const C
 
 // Whether vertices i and j of the polygon see each other through its
 // interior (see inner_distances()).
-SPECTRALSEG_INLINE bool see_each_other(const std::vector<Contour_kernel::Point_2>& polygon, std::size_t i, std::size_t j)
+SPECTRALSEG_INLINE bool see_each_other(const std::vector<Contour_kernel::Point_2>& polygon, std::size_t i,
+                                       std::size_t j)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = polygon.size();

@@ -88,10 +88,10 @@ namespace internal {
 // (L, then L-MDS) scores above `structure_fallback` (below the threshold;
 // not with `require_agreement`), that test passes after all (the scores
 // of every test run are kept).
-SPECTRALSEG_INLINE Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
-                                                             const Segmentability_options& options,
-                                                             const SpectralSeg::internal::Elimination_permutation& vertex_order,
-                                                             double structure_fallback = std::numeric_limits<double>::infinity())
+SPECTRALSEG_INLINE Segmentability_result test_segmentability(
+    const Mesh_piece& piece, const Principal_curvatures* curvatures, const Segmentability_options& options,
+    const SpectralSeg::internal::Elimination_permutation& vertex_order,
+    double structure_fallback = std::numeric_limits<double>::infinity())
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Segmentability_result r;
@@ -217,8 +217,9 @@ SPECTRALSEG_INLINE Segmentability_result test_segmentability(const Mesh_piece& p
 /// \param piece a connected piece
 /// \param curvatures the mesh's principal curvatures (needed for the M tests)
 /// \param options \f$\eta\f$, modes and the contour and solver parameters
-SPECTRALSEG_INLINE Segmentability_result test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
-                                                             const Segmentability_options& options = Segmentability_options())
+SPECTRALSEG_INLINE Segmentability_result
+test_segmentability(const Mesh_piece& piece, const Principal_curvatures* curvatures,
+                    const Segmentability_options& options = Segmentability_options())
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   return internal::test_segmentability(piece, curvatures, options, SpectralSeg::internal::Elimination_permutation());

@@ -90,9 +90,9 @@ struct Planar_projection
 ///   \f$\epsilon\f$ is only meaningful against a scale-free weight).
 ///
 /// \pre for `Projection::geometry`, `curvatures` holds the mesh's curvatures
-SPECTRALSEG_INLINE Eigen::SparseMatrix<double> projection_operator(const Mesh_piece& piece, Projection which,
-                                                                   const Principal_curvatures* curvatures,
-                                                                   const Projection_options& options = Projection_options())
+SPECTRALSEG_INLINE Eigen::SparseMatrix<double> projection_operator(
+    const Mesh_piece& piece, Projection which, const Principal_curvatures* curvatures,
+    const Projection_options& options = Projection_options())
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = piece.number_of_vertices();
@@ -190,9 +190,9 @@ private:
 // spectral_projection() with the sparse factorisations in the elimination
 // order `vertex_order` of the piece's vertices (empty: their approximate
 // minimum degree order)
-SPECTRALSEG_INLINE Planar_projection spectral_projection(const Mesh_piece& piece, Projection which,
-                                                         const Principal_curvatures* curvatures, const Projection_options& options,
-                                                         const SpectralSeg::internal::Elimination_permutation& vertex_order)
+SPECTRALSEG_INLINE Planar_projection spectral_projection(
+    const Mesh_piece& piece, Projection which, const Principal_curvatures* curvatures,
+    const Projection_options& options, const SpectralSeg::internal::Elimination_permutation& vertex_order)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = piece.number_of_vertices();

@@ -43,8 +43,8 @@ struct Binary_raster
 // (conservative rasterisation by the separating axis test: the two raster
 // axes through the pixel range, the three edge normals per pixel). A
 // degenerate triangle marks the pixels its segment passes through.
-SPECTRALSEG_INLINE void draw_triangle_conservatively(Binary_raster& raster, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                                                     const Eigen::Vector2d& c)
+SPECTRALSEG_INLINE void draw_triangle_conservatively(Binary_raster& raster, const Eigen::Vector2d& a,
+                                                     const Eigen::Vector2d& b, const Eigen::Vector2d& c)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Eigen::Vector2d lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);

@@ -39,9 +39,9 @@ struct Contact
 // contact per pair of faces. Then the specks, parts with less than
 // `speck_area_fraction` of the area, are linked to the nearest other part,
 // smallest first, until none is left apart. Deterministic.
-SPECTRALSEG_INLINE std::vector<Contact> contact_adjacencies(const Mesh_geometry& geo,
-                                                            const std::vector<std::pair<std::uint32_t, std::uint32_t>>& adjacent,
-                                                            double gap, double speck_area_fraction)
+SPECTRALSEG_INLINE std::vector<Contact> contact_adjacencies(
+    const Mesh_geometry& geo, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& adjacent, double gap,
+    double speck_area_fraction)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t nf = geo.number_of_faces();

@@ -61,13 +61,12 @@ SPECTRALSEG_INLINE double separation_exponent(double share)
 // The concave angles are those of Refinement::concave_angle_weights() at
 // `reference_faces` (0: the mesh's own resolution), or `given_angles` when
 // not null (those angles, made once for several merges).
-SPECTRALSEG_INLINE std::size_t merge_by_contrast(const Dual_graph& graph, const std::vector<double>& weights,
-                                                 std::vector<int>& labels, std::size_t min_segments, double limit,
-                                                 double min_area_fraction,
-                                                 const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(),
-                                                 double neck_scale = 0., Refinement::internal::Merge_history* history = nullptr,
-                                                 std::size_t reference_faces = 0,
-                                                 const std::vector<double>* given_angles = nullptr)
+SPECTRALSEG_INLINE std::size_t merge_by_contrast(
+    const Dual_graph& graph, const std::vector<double>& weights, std::vector<int>& labels, std::size_t min_segments,
+    double limit, double min_area_fraction,
+    const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(), double neck_scale = 0.,
+    Refinement::internal::Merge_history* history = nullptr, std::size_t reference_faces = 0,
+    const std::vector<double>* given_angles = nullptr)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   // the concave angles at the reference resolution (the mesh's own up to it)

@@ -28,8 +28,8 @@ namespace internal {
 // The area-weighted Rand distance between two labellings with labels
 // 0 .. a-1 and 0 .. b-1: the area-weighted share of pairs of points of the
 // surface that one puts in the same segment and the other does not.
-SPECTRALSEG_INLINE double rand_distance(const std::vector<int>& x, std::size_t a, const std::vector<int>& y, std::size_t b,
-                                        const std::vector<double>& area)
+SPECTRALSEG_INLINE double rand_distance(const std::vector<int>& x, std::size_t a, const std::vector<int>& y,
+                                        std::size_t b, const std::vector<double>& area)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<double> ax(a, 0.), ay(b, 0.), axy(a * b, 0.);
@@ -83,11 +83,9 @@ SPECTRALSEG_INLINE std::size_t medoid_labelling(const std::vector<std::vector<in
 // (descending, each below c), and K-means is run again from the point
 // nearest each joined centroid (ties: the smallest index). One K-means
 // result per size.
-SPECTRALSEG_INLINE std::vector<Clustering::Kmeans_result> coarser_clusterings(const Eigen::MatrixXd& points,
-                                                                              const std::vector<int>& base, std::size_t c,
-                                                                              const std::vector<std::size_t>& sizes,
-                                                                              std::size_t max_iterations, std::size_t sample_limit,
-                                                                              const Execution& exec)
+SPECTRALSEG_INLINE std::vector<Clustering::Kmeans_result> coarser_clusterings(
+    const Eigen::MatrixXd& points, const std::vector<int>& base, std::size_t c, const std::vector<std::size_t>& sizes,
+    std::size_t max_iterations, std::size_t sample_limit, const Execution& exec)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = base.size();

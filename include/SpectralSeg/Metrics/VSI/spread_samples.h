@@ -22,7 +22,8 @@ namespace VSI {
 /// \brief Chooses about `count` points spread over space: the points are
 /// ordered along a Morton (Z-order) curve over their bounding box and taken
 /// at regular steps. Deterministic; returns sorted indices.
-SPECTRALSEG_INLINE std::vector<std::uint32_t> spread_samples(const std::vector<Eigen::Vector3d>& points, std::size_t count)
+SPECTRALSEG_INLINE std::vector<std::uint32_t> spread_samples(const std::vector<Eigen::Vector3d>& points,
+                                                             std::size_t count)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = points.size();
