@@ -25,7 +25,8 @@
 //                           allows), pairs=N (sample-face pairs tried per piece),
 //                           sequence=distance|harmonic, sequence-scale=S (the harmonic sequence's angle scale),
 //                           chain=R (chain eigenvalue ratio), continuation=X (L threshold below a passed piece),
-//                           contrast=C (a cut's boundary at least C times as concave as its piece; 0: off)
+//                           contrast=C (a cut's boundary at least C times as concave as its piece; 0: off),
+//                           holes=0|1 (the projection's holes count on pieces with a handle)
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --labels-dir DIR        each result's labels, METHOD_ID.seg, one per face of the .off file
@@ -426,6 +427,8 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
       so.min_cut_contrast = std::stod(value);
     else if(key == "roots")
       so.min_cut_salience_at_roots = value == "1";
+    else if(key == "holes")
+      so.segmentability.contour.count_holes = value == "1";
     else
       throw std::runtime_error("--salient-set: unknown key '" + key + "'");
   }

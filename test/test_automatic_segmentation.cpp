@@ -721,6 +721,100 @@ TEST_CASE("the first cut of a body takes a limb, not a half", "[automatic]")
   }
 }
 
+TEST_CASE("the genus of a piece counts its handles", "[automatic]")
+{
+  CHECK(Shape(test_meshes::welded(test_meshes::box(2., 1.5, 1., 4))).piece().genus() == 0);
+  CHECK(Shape(test_meshes::sphere(1., 12, 24)).piece().genus() == 0);
+  CHECK(Shape(test_meshes::star(1)).piece().genus() == 0);
+  CHECK(Shape(test_meshes::block_with_handles(1, 1)).piece().genus() == 1);
+  CHECK(Shape(test_meshes::block_with_handles(2, 2)).piece().genus() == 2);
+  // a piece cut out of a surface: a sphere with holes is still genus 0, the
+  // handle alone (an arch, a tube open at both ends) too
+  const Shape s(test_meshes::block_with_handles(2, 1));
+  std::vector<Mesh_piece::size_type> body, handle;
+  for(Mesh_piece::size_type f = 0; f < s.graph.number_of_faces(); ++f)
+    (s.soup.face_part[f] == 0 ? body : handle).push_back(f);
+  CHECK(Mesh_piece(s.graph, body).genus() == 0);
+  CHECK(Mesh_piece(s.graph, handle).genus() == 0);
+  // a strip: a disc
+  const Shape strip(test_meshes::square_strip(6));
+  CHECK(strip.piece().genus() == 0);
+}
+
+TEST_CASE("holes of a projection: an annulus is less convex than the disc around it", "[automatic]")
+{
+  // a flat annulus, radii 1 and 0.5, and the disc of radius 1
+  const std::size_t n = 64;
+  std::vector<Eigen::Vector2d> points;
+  std::vector<std::array<std::uint32_t, 3>> ring, disc;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double a = 2. * test_meshes::pi * double(i) / double(n);
+    points.emplace_back(std::cos(a), std::sin(a));
+    points.emplace_back(0.5 * std::cos(a), 0.5 * std::sin(a));
+  }
+  points.emplace_back(0., 0.);
+  const std::uint32_t centre = std::uint32_t(points.size() - 1);
+  for(std::uint32_t i = 0; i < n; ++i)
+  {
+    const std::uint32_t j = (i + 1) % n;
+    ring.push_back({2 * i, 2 * j, 2 * i + 1});
+    ring.push_back({2 * j, 2 * j + 1, 2 * i + 1});
+    disc.push_back({2 * i, 2 * j, centre});
+  }
+  std::pair<double, double> holes(-1., -1.);
+  Segmentability::trace_outer_contour(points, disc, 200, &holes);
+  CHECK(holes.first == 0.);
+  CHECK(holes.second == 0.);
+  Segmentability::trace_outer_contour(points, ring, 200, &holes);
+  INFO("hole share " << holes.first << ", hole perimeter " << holes.second);
+  // a quarter of the disc's area, less the pixels the conservative raster adds
+  CHECK(holes.first > 0.2);
+  CHECK(holes.first < 0.25);
+  CHECK(holes.second > 0.85 * test_meshes::pi); // the inner circle, 2 pi 0.5, less those pixels
+  CHECK(holes.second < 1.1 * test_meshes::pi);
+  Segmentability::Contour_options o;
+  const double without = Segmentability::analyse_contour(points, ring, o, false).score;
+  o.count_holes = true;
+  const Segmentability::Contour_analysis with = Segmentability::analyse_contour(points, ring, o, false);
+  CHECK(without < 0.05); // the outer contour is a circle
+  CHECK(with.holes == holes.first);
+  CHECK(with.score > 0.1); // segmentable
+  CHECK(Segmentability::analyse_contour(points, disc, o, false).score == Approx(without).margin(1e-12));
+}
+
+TEST_CASE("a handle is cut off its body; the thesis's outer contour does not see it", "[automatic]")
+{
+  const Shape s(test_meshes::block_with_handles(2, 1));
+  Automatic_segmentation_options<> o;
+  const Automatic_segmentation_result r = segment_automatically(s.graph, sequence_weights(s.graph), o, Execution(1));
+  // the body is one part, and no handle face is in it
+  std::set<int> body_labels;
+  for(std::size_t f = 0; f < s.soup.face_part.size(); ++f)
+    if(s.soup.face_part[f] == 0)
+      body_labels.insert(r.labels[f]);
+  REQUIRE(body_labels.size() == 1);
+  std::size_t handle_in_body = 0, handle = 0;
+  for(std::size_t f = 0; f < s.soup.face_part.size(); ++f)
+    if(s.soup.face_part[f] == 1)
+    {
+      ++handle;
+      handle_in_body += r.labels[f] == *body_labels.begin();
+    }
+  INFO(r.number_of_segments << " parts; " << handle_in_body << " of " << handle << " handle faces with the body");
+  CHECK(r.number_of_segments >= 2);
+  CHECK(handle_in_body <= handle / 20);
+  // the thesis's test: the outer contour of the L projection is convex
+  const Segmentability::Segmentability_result thesis =
+    Segmentability::test_segmentability(s.piece(), &s.curvatures, Segmentability::Segmentability_options());
+  const Segmentability::Segmentability_result ours =
+    Segmentability::test_segmentability(s.piece(), &s.curvatures, o.segmentability);
+  INFO("thesis L " << thesis.scores[0] << ", ours L " << ours.scores[0]);
+  CHECK(thesis.scores[0] < 0.1);
+  CHECK(ours.scores[0] > 0.1);
+  CHECK(ours.contour.holes > 0.);
+}
+
 TEST_CASE("a component no test passes is still cut once when its best cut is salient enough", "[automatic]")
 {
   const Shape s(body());

@@ -247,6 +247,45 @@ inline Soup star(int s)
   return voxel_union(cells, s, part);
 }
 
+// A block of 4 x 4 x 8 cells (part 0) with one or two handles on its +x
+// side (parts 1, 2): each an arch out 3 cells from the block between heights
+// 1 and 6, around an opening of 2 x 4 cells, 2 cells thick (one handle) or
+// 1 cell thick at y = 0 and y = 3 (two). Genus `handles`.
+inline Soup block_with_handles(int s, int handles)
+{
+  std::vector<std::array<int, 3>> cells;
+  std::vector<int> part;
+  for(int x = 0; x < 4; ++x)
+    for(int y = 0; y < 4; ++y)
+      for(int z = 0; z < 8; ++z)
+      {
+        cells.push_back({x, y, z});
+        part.push_back(0);
+      }
+  std::set<std::array<int, 3>> arch;
+  for(int h = 0; h < handles; ++h)
+  {
+    const int y0 = handles == 1 ? 1 : 3 * h, thickness = handles == 1 ? 2 : 1;
+    for(int y = y0; y < y0 + thickness; ++y)
+    {
+      for(int x = 4; x < 7; ++x)
+      {
+        arch.insert({x, y, 1});
+        arch.insert({x, y, 6});
+      }
+      for(int z = 1; z < 7; ++z)
+        arch.insert({6, y, z});
+    }
+    for(const auto& c : arch)
+    {
+      cells.push_back(c);
+      part.push_back(1 + h);
+    }
+    arch.clear();
+  }
+  return voxel_union(cells, s, part);
+}
+
 // A UV sphere of radius r centred at the origin.
 inline Soup sphere(double r, std::size_t rings, std::size_t segments)
 {

@@ -9,10 +9,12 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/exceptions.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace SpectralSeg {
@@ -190,6 +192,79 @@ public:
       ++count;
     }
     return count;
+  }
+
+  /// the number of handles of the piece's surface: its genus, from the
+  /// Euler characteristic of its triangles, \f$\chi = V - E + F = 2c - 2g -
+  /// b\f$ with \f$c\f$ the components (faces joined by a shared edge) and
+  /// \f$b\f$ the border loops (border edges joined by a shared vertex).
+  /// 0 for a disc, a sphere, a tube or a sphere with holes cut in it; 1 for
+  /// a cup with its handle, or a torus. Non-manifold edges and vertices make
+  /// the count approximate (never below 0)
+  std::size_t genus() const
+  {
+    // each triangle's edges as (sorted vertex pair, face), sorted
+    std::vector<std::pair<std::pair<size_type, size_type>, size_type>> sides;
+    sides.reserve(3 * triangles_.size());
+    for(size_type f = 0; f < triangles_.size(); ++f)
+      for(int c = 0; c < 3; ++c)
+      {
+        size_type a = triangles_[f][c], b = triangles_[f][(c + 1) % 3];
+        if(a == b)
+          continue;
+        if(b < a)
+          std::swap(a, b);
+        sides.push_back({{a, b}, f});
+      }
+    std::sort(sides.begin(), sides.end());
+    std::vector<size_type> face_root(triangles_.size()), vertex_root(vertices_.size());
+    for(size_type i = 0; i < face_root.size(); ++i)
+      face_root[i] = i;
+    for(size_type i = 0; i < vertex_root.size(); ++i)
+      vertex_root[i] = i;
+    const auto find = [](std::vector<size_type>& root, size_type x) {
+      while(root[x] != x)
+        x = root[x] = root[root[x]];
+      return x;
+    };
+    const auto join = [&find](std::vector<size_type>& root, size_type a, size_type b) {
+      a = find(root, a);
+      b = find(root, b);
+      if(a == b)
+        return false;
+      root[std::max(a, b)] = std::min(a, b);
+      return true;
+    };
+    long long edges = 0, components = static_cast<long long>(triangles_.size()), border_loops = 0;
+    std::vector<unsigned char> on_border(vertices_.size(), 0);
+    for(std::size_t i = 0; i < sides.size();)
+    {
+      std::size_t j = i + 1;
+      while(j < sides.size() && sides[j].first == sides[i].first)
+      {
+        if(join(face_root, sides[i].second, sides[j].second))
+          --components;
+        ++j;
+      }
+      ++edges;
+      if(j - i == 1) // a border edge
+      {
+        const size_type a = sides[i].first.first, b = sides[i].first.second;
+        for(size_type v : {a, b})
+          if(!on_border[v])
+          {
+            on_border[v] = 1;
+            ++border_loops; // a loop per border vertex, less one per join
+          }
+        if(join(vertex_root, a, b))
+          --border_loops;
+      }
+      i = j;
+    }
+    const long long euler =
+        static_cast<long long>(vertices_.size()) - edges + static_cast<long long>(triangles_.size());
+    const long long twice_genus = 2 * components - border_loops - euler;
+    return twice_genus > 0 ? std::size_t(twice_genus / 2) : 0;
   }
 
 private:

@@ -53,7 +53,10 @@ namespace SpectralSeg {
 /// cuts along a crease four times as concave as their piece's mean
 /// (`min_cut_contrast`), chosen among the sequences of three sample pairs
 /// (`sample_pairs`), so that smooth tubes and creased surfaces are not
-/// sliced; no part under 2% of its component; at most 64 parts.
+/// sliced; on a piece with a handle (`Mesh_piece::genus()`), the holes of
+/// its projection count in its convexity (`Segmentability::Contour_options::
+/// count_holes`), so that a vase's handles are cut off; no part under 2% of
+/// its component; at most 64 parts.
 /// \tparam SalienceModel a model of `Salience`
 template <typename SalienceModel = Salience::Thesis_salience>
 struct Automatic_segmentation_options
@@ -152,6 +155,7 @@ struct Automatic_segmentation_options
     s.projection.concave_floor = true;
     s.projection.whiten = Segmentability::Projection_options::Whitening::geometry;
     s.chain_eigenvalue_ratio = 3.;
+    s.contour.count_holes = true;
     return s;
   }
 

@@ -19,8 +19,11 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace SpectralSeg {
@@ -42,6 +45,15 @@ struct Contour_options
   /// exponent \f$w\f$ of the perimeter ratio in the convexity
   /// (`convexity()`)
   double perimeter_exponent = 4.;
+  /// whether the holes of the projection count (our addition; `false`, the
+  /// thesis: only the outer contour): the convexity is then that of the
+  /// region the projection covers, \f$C_1\f$ its area and \f$C_2\f$ the
+  /// length of all its boundaries, the holes' included, against the hull's,
+  /// so that a handle, whose projection encloses an opening, makes a piece
+  /// less convex. `test_segmentability()` counts them only on pieces with a
+  /// handle (`Mesh_piece::genus()` at least 1): the border loops of a piece
+  /// that cuts have taken parts off may project as holes too
+  bool count_holes = false;
 };
 
 /// \ingroup PkgSpectralSegSegmentability
@@ -56,8 +68,15 @@ struct Contour_analysis
   /// the contour after smoothing and simplification: the thesis's
   /// \f$\zeta\f$
   Contour contour;
-  /// the segmentability score \f$S(\zeta)\f$ (`segmentability_score()`)
+  /// the segmentability score \f$S(\zeta)\f$ (`segmentability_score()`;
+  /// with `Contour_options::count_holes`, the holes' share of the area
+  /// taken out of its area ratio)
   double score = 0.;
+  /// the share of the area inside `traced` that the projection does not
+  /// cover (its holes; computed with `Contour_options::count_holes` only)
+  double holes = 0.;
+  /// the length of the holes' boundaries (with `Contour_options::count_holes`)
+  double hole_perimeter = 0.;
   /// the inner distances between the vertices of `contour`
   /// (`inner_distances()`), also what `bending_samples()` needs
   Eigen::MatrixXd inner;
@@ -125,10 +144,23 @@ SPECTRALSEG_INLINE Contour_analysis analyse_contour(const std::vector<Eigen::Vec
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Contour_analysis analysis;
-  analysis.traced = trace_outer_contour(points, triangles, options.resolution);
+  std::pair<double, double> holes(0., 0.);
+  analysis.traced = trace_outer_contour(points, triangles, options.resolution, options.count_holes ? &holes : nullptr);
+  analysis.holes = holes.first;
+  analysis.hole_perimeter = holes.second;
   analysis.contour =
       simplify_contour(smooth_contour(analysis.traced, options.smoothing_error), options.vertices);
-  analysis.score = segmentability_score(analysis.contour, options.perimeter_exponent);
+  if(options.count_holes && analysis.holes > 0.)
+  {
+    Convexity c = convexity(analysis.contour, options.perimeter_exponent);
+    c.area_ratio *= 1. - analysis.holes;
+    const double outer = perimeter(analysis.contour);
+    if(outer > 0.)
+      c.perimeter_ratio *= outer / (outer + analysis.hole_perimeter);
+    analysis.score = 1. - std::max(c.area_ratio, std::pow(c.perimeter_ratio, options.perimeter_exponent));
+  }
+  else
+    analysis.score = segmentability_score(analysis.contour, options.perimeter_exponent);
   analysis.inner = inner_distances(analysis.contour);
   if(compute_normalized)
     add_normalized(analysis, options);

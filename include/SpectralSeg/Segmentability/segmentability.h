@@ -119,12 +119,16 @@ SPECTRALSEG_INLINE Segmentability_result test_segmentability(
     }
     return r;
   };
+  // the projection's holes count only where the piece has a handle: a
+  // piece's border loops (where cuts took parts off) may also project as holes
+  Contour_options contour_options = options.contour;
+  contour_options.count_holes = options.contour.count_holes && piece.genus() > 0;
   for(int p = 0; p < projections; ++p)
   {
     const Projection kind = p == 0 ? Projection::structure : Projection::geometry;
     Planar_projection proj = internal::spectral_projection(piece, kind, curvatures, options.projection, vertex_order);
     // the MDS re-embedding is computed only when the plain contour fails
-    Contour_analysis a = analyse_contour(proj.points, piece.triangles(), options.contour, false);
+    Contour_analysis a = analyse_contour(proj.points, piece.triangles(), contour_options, false);
     const Test plain = p == 0 ? Test::structure : Test::geometry;
     const Test normalized = p == 0 ? Test::structure_normalized : Test::geometry_normalized;
     r.scores[static_cast<std::size_t>(plain)] = a.score;

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace SpectralSeg {
@@ -210,6 +211,66 @@ SPECTRALSEG_INLINE std::vector<std::array<int, 2>> moore_trace(const Binary_rast
 ;
 #endif
 
+// The holes of the black region: the white pixels that no 4-connected
+// white path joins to the raster's border (the black region is
+// 8-connected, so a 4-connected white path cannot cross it). Returns their
+// share of the pixels inside the region's outer boundary and the length of
+// their boundaries in pixels (the pixel sides between a hole and the region,
+// times pi/4, the mean ratio of a curve's length to its length along the
+// two axes).
+SPECTRALSEG_INLINE std::pair<double, double> raster_holes(const Binary_raster& raster)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+{
+  const int s = raster.size;
+  std::vector<unsigned char> outside(raster.black.size(), 0);
+  std::vector<std::array<int, 2>> stack;
+  auto visit = [&](int i, int j) {
+    if(!raster.inside(i, j) || raster.at(i, j))
+      return;
+    unsigned char& o = outside[std::size_t(j) * std::size_t(s) + std::size_t(i)];
+    if(o)
+      return;
+    o = 1;
+    stack.push_back({{i, j}});
+  };
+  for(int k = 0; k < s; ++k)
+  {
+    visit(k, 0);
+    visit(k, s - 1);
+    visit(0, k);
+    visit(s - 1, k);
+  }
+  while(!stack.empty())
+  {
+    const std::array<int, 2> p = stack.back();
+    stack.pop_back();
+    visit(p[0] + 1, p[1]);
+    visit(p[0] - 1, p[1]);
+    visit(p[0], p[1] + 1);
+    visit(p[0], p[1] - 1);
+  }
+  std::size_t black = 0, holes = 0, sides = 0;
+  for(int j = 0; j < s; ++j)
+    for(int i = 0; i < s; ++i)
+    {
+      const std::size_t id = std::size_t(j) * std::size_t(s) + std::size_t(i);
+      if(raster.black[id])
+        ++black;
+      else if(!outside[id])
+      {
+        ++holes;
+        // a hole pixel is never on the raster's border
+        sides += std::size_t(raster.at(i + 1, j) != 0) + std::size_t(raster.at(i - 1, j) != 0) +
+                 std::size_t(raster.at(i, j + 1) != 0) + std::size_t(raster.at(i, j - 1) != 0);
+      }
+    }
+  const double pi = 3.14159265358979323846;
+  return {black + holes > 0 ? double(holes) / double(black + holes) : 0., double(sides) * pi / 4.};
+}
+#else
+;
+#endif
+
 } // namespace internal
 /// \endcond
 
@@ -236,6 +297,11 @@ SPECTRALSEG_INLINE std::vector<std::array<int, 2>> moore_trace(const Binary_rast
 /// \param triangles vertex index triples into `points`
 /// \param resolution the width and height of the raster in pixels (the
 ///        thesis uses 200)
+/// \param holes if not null, set to the share of the pixels inside the
+///        traced boundary that the triangles do not cover (the projection's
+///        holes, e.g. the opening of a handle) and the length of the holes'
+///        boundaries in the input's coordinates (0 and 0 when there is
+///        nothing to draw)
 /// \return the contour, or an empty contour when there is nothing to draw:
 ///         no triangle, or all the vertices used by the triangles at the
 ///         same point
@@ -243,9 +309,12 @@ SPECTRALSEG_INLINE std::vector<std::array<int, 2>> moore_trace(const Binary_rast
 ///         range, or `resolution` is smaller than 8
 SPECTRALSEG_INLINE Contour trace_outer_contour(const std::vector<Eigen::Vector2d>& points,
                                                const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                                               std::size_t resolution = 200)
+                                               std::size_t resolution = 200,
+                                               std::pair<double, double>* holes = nullptr)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
+  if(holes)
+    *holes = {0., 0.};
   if(resolution < 8 || resolution > 100000)
     throw Invalid_input("trace_outer_contour: the resolution must be in [8, 100000], got " +
                         std::to_string(resolution));
@@ -285,6 +354,11 @@ SPECTRALSEG_INLINE Contour trace_outer_contour(const std::vector<Eigen::Vector2d
   const std::array<int, 2> start = internal::keep_largest_region(raster);
   if(start[0] < 0)
     return contour;
+  if(holes)
+  {
+    *holes = internal::raster_holes(raster);
+    holes->second /= scale;
+  }
   const std::vector<std::array<int, 2>> boundary = internal::moore_trace(raster, start);
   contour.reserve(boundary.size());
   for(const auto& b : boundary)
