@@ -781,6 +781,9 @@ TEST_CASE("holes of a projection: an annulus is less convex than the disc around
   CHECK(with.holes == holes.first);
   CHECK(with.score > 0.1); // segmentable
   CHECK(Segmentability::analyse_contour(points, disc, o, false).score == Approx(without).margin(1e-12));
+  const Segmentability::Contour circle = Segmentability::analyse_contour(points, disc, o, false).contour;
+  CHECK_THROWS_AS(Segmentability::convexity(circle, 4., 1.5), Invalid_input);
+  CHECK_THROWS_AS(Segmentability::convexity(circle, 4., 0.2, -1.), Invalid_input);
 }
 
 TEST_CASE("a handle is cut off its body; the thesis's outer contour does not see it", "[automatic]")

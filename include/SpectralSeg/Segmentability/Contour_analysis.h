@@ -19,9 +19,7 @@
 
 #include <Eigen/Core>
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -50,9 +48,10 @@ struct Contour_options
   /// region the projection covers, \f$C_1\f$ its area and \f$C_2\f$ the
   /// length of all its boundaries, the holes' included, against the hull's,
   /// so that a handle, whose projection encloses an opening, makes a piece
-  /// less convex. `test_segmentability()` counts them only on pieces with a
-  /// handle (`Mesh_piece::genus()` at least 1): the border loops of a piece
-  /// that cuts have taken parts off may project as holes too
+  /// less convex (`convexity()` with holes). `test_segmentability()` counts
+  /// them only on pieces with a handle (`Mesh_piece::genus()` at least 1):
+  /// the border loops of a piece that cuts have taken parts off may project
+  /// as holes too. The re-embedded contour \f$\zeta^*\f$ has no holes
   bool count_holes = false;
 };
 
@@ -150,17 +149,8 @@ SPECTRALSEG_INLINE Contour_analysis analyse_contour(const std::vector<Eigen::Vec
   analysis.hole_perimeter = holes.second;
   analysis.contour =
       simplify_contour(smooth_contour(analysis.traced, options.smoothing_error), options.vertices);
-  if(options.count_holes && analysis.holes > 0.)
-  {
-    Convexity c = convexity(analysis.contour, options.perimeter_exponent);
-    c.area_ratio *= 1. - analysis.holes;
-    const double outer = perimeter(analysis.contour);
-    if(outer > 0.)
-      c.perimeter_ratio *= outer / (outer + analysis.hole_perimeter);
-    analysis.score = 1. - std::max(c.area_ratio, std::pow(c.perimeter_ratio, options.perimeter_exponent));
-  }
-  else
-    analysis.score = segmentability_score(analysis.contour, options.perimeter_exponent);
+  analysis.score =
+      1. - convexity(analysis.contour, options.perimeter_exponent, analysis.holes, analysis.hole_perimeter).convexity;
   analysis.inner = inner_distances(analysis.contour);
   if(compute_normalized)
     add_normalized(analysis, options);

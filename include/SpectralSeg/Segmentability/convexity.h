@@ -52,20 +52,32 @@ struct Convexity
 /// area (a self-intersecting contour counts each region with its winding
 /// number); both ratios are clamped to \f$[0, 1]\f$.
 ///
+/// With holes (our addition, `Contour_options::count_holes`), the measures
+/// are those of the region the contour encloses less its holes: \f$C_1\f$
+/// takes the region's area, \f$(1 - h)\f$ times the contour's, and the
+/// perimeter of \f$C_2\f$ adds the holes' boundaries.
+///
 /// \param c the contour (any orientation)
 /// \param perimeter_exponent the exponent \f$w\f$ (the thesis uses 4)
+/// \param holes \f$h\f$, the share of the area inside the contour that the
+///        region does not cover (0: none, the thesis)
+/// \param hole_perimeter the length of the holes' boundaries
 /// \return the measures; all three are 1 for a degenerate contour (fewer
 ///         than three points, or a convex hull of zero area), which has no
 ///         concavity to show
-/// \throws Invalid_input if a coordinate is not finite or
-///         `perimeter_exponent` is not finite and positive
-SPECTRALSEG_INLINE Convexity convexity(const Contour& c, double perimeter_exponent = 4.)
+/// \throws Invalid_input if a coordinate is not finite,
+///         `perimeter_exponent` is not finite and positive, `holes` is not in
+///         \f$[0, 1]\f$ or `hole_perimeter` is negative or not finite
+SPECTRALSEG_INLINE Convexity convexity(const Contour& c, double perimeter_exponent = 4., double holes = 0.,
+                                       double hole_perimeter = 0.)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   internal::check_finite(c, "convexity");
   if(!(perimeter_exponent > 0.) || !std::isfinite(perimeter_exponent))
     throw Invalid_input("convexity: the perimeter exponent must be finite and positive, got " +
                         std::to_string(perimeter_exponent));
+  if(!(holes >= 0. && holes <= 1.) || !(hole_perimeter >= 0.) || !std::isfinite(hole_perimeter))
+    throw Invalid_input("convexity: the holes' share must be in [0, 1] and their perimeter finite and non-negative");
   Convexity result;
   if(c.size() < 3)
     return result;
@@ -83,8 +95,8 @@ SPECTRALSEG_INLINE Convexity convexity(const Contour& c, double perimeter_expone
   const double contour_perimeter = perimeter(c);
   if(hull.size() < 3 || !(hull_area > 0.) || !(contour_perimeter > 0.))
     return result;
-  result.area_ratio = std::clamp(std::abs(signed_area(c)) / hull_area, 0., 1.);
-  result.perimeter_ratio = std::clamp(perimeter(hull) / contour_perimeter, 0., 1.);
+  result.area_ratio = std::clamp((1. - holes) * std::abs(signed_area(c)) / hull_area, 0., 1.);
+  result.perimeter_ratio = std::clamp(perimeter(hull) / (contour_perimeter + hole_perimeter), 0., 1.);
   result.convexity = std::max(result.area_ratio, std::pow(result.perimeter_ratio, perimeter_exponent));
   return result;
 }
