@@ -67,9 +67,9 @@ struct Contour_analysis
   /// the contour after smoothing and simplification: the thesis's
   /// \f$\zeta\f$
   Contour contour;
-  /// the segmentability score \f$S(\zeta)\f$ (`segmentability_score()`;
-  /// with `Contour_options::count_holes`, the holes' share of the area
-  /// taken out of its area ratio)
+  /// the segmentability score \f$S(\zeta)\f$, one minus `convexity()` of
+  /// `contour` (`segmentability_score()`; with `Contour_options::count_holes`,
+  /// of the region less its holes: `holes` and `hole_perimeter`)
   double score = 0.;
   /// the share of the area inside `traced` that the projection does not
   /// cover (its holes; computed with `Contour_options::count_holes` only)
