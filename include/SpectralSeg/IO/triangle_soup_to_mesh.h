@@ -8,6 +8,7 @@
 
 #include <SpectralSeg/IO/Mesh_file_report.h>
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
+#include <SpectralSeg/IO/internal/oriented_manifold_soup_to_mesh.h>
 #include <SpectralSeg/IO/internal/repair_polygon_soup.h>
 #include <SpectralSeg/IO/internal/spatial_order.h>
 #include <SpectralSeg/exceptions.h>
@@ -88,7 +89,13 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
   // vertices and faces along Hilbert curves: neighbours in the mesh become
   // neighbours in memory, and the file's order stops mattering
   const std::vector<std::size_t> new_triangle = sort_along_hilbert_curve(points, triangles);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  // CGAL's construction is quadratic in a vertex's degree; the mesh it
+  // would make is made directly when the soup allows it (always, unless
+  // orienting it failed)
+  if(oriented_manifold || is_oriented_manifold_soup(points.size(), triangles))
+    oriented_manifold_soup_to_mesh(points, triangles, mesh);
+  else
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   if(num_faces(mesh) != triangles.size())
     throw Invalid_input(name + ": the faces could not be assembled into a mesh");
 

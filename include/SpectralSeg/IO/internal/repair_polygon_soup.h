@@ -184,8 +184,7 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
 }
 
 // The undirected edges of the triangles, (smaller, larger) vertex, sorted.
-inline std::vector<std::uint64_t> sorted_edge_keys(const std::vector<std::array<std::size_t, 3>>& triangles,
-                                                   bool directed)
+inline std::vector<std::uint64_t> sorted_edge_keys(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
   std::vector<std::uint64_t> keys;
   keys.reserve(3 * triangles.size());
@@ -193,7 +192,7 @@ inline std::vector<std::uint64_t> sorted_edge_keys(const std::vector<std::array<
     for(int i = 0; i < 3; ++i)
     {
       std::uint64_t a = t[std::size_t(i)], b = t[std::size_t((i + 1) % 3)];
-      if(!directed && a > b)
+      if(a > b)
         std::swap(a, b);
       keys.push_back((a << 32) | b);
     }
@@ -204,7 +203,7 @@ inline std::vector<std::uint64_t> sorted_edge_keys(const std::vector<std::array<
 // Edges of the triangles shared by more than two of them.
 inline std::size_t count_non_manifold_edges(const std::vector<std::array<std::size_t, 3>>& triangles)
 {
-  const std::vector<std::uint64_t> keys = sorted_edge_keys(triangles, false);
+  const std::vector<std::uint64_t> keys = sorted_edge_keys(triangles);
   std::size_t n = 0;
   for(std::size_t i = 0; i < keys.size();)
   {
@@ -220,18 +219,17 @@ inline std::size_t count_non_manifold_edges(const std::vector<std::array<std::si
 // True when the triangles already form a consistently oriented 2-manifold
 // (with or without boundary): no directed edge twice, and the triangles
 // around each vertex one fan. Then CGAL's orient_polygon_soup() has nothing
-// to do. Linear after a sort; indices must fit 32 bits.
+// to do. O(n log d) for n triangles and vertex degrees up to d (a fan of a
+// million triangles around one vertex included); indices must fit 32 bits.
 inline bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<std::array<std::size_t, 3>>& triangles)
 {
   if(vertices >= (std::size_t(1) << 32))
     return false;
-  const std::vector<std::uint64_t> halfedges = sorted_edge_keys(triangles, true);
-  if(std::adjacent_find(halfedges.begin(), halfedges.end()) != halfedges.end())
-    return false;
-  // The link of vertex v: an edge a -> b for each triangle (v, a, b). With
-  // unique directed edges every link vertex has at most one successor and
-  // one predecessor: the link is paths and cycles, and v is regular when it
-  // is exactly one of them.
+  // The link of vertex v: an edge a -> b for each triangle (v, a, b), one
+  // for each directed edge v -> a of the triangles. A directed edge twice is
+  // a link vertex with two successors; with unique directed edges every
+  // link vertex has at most one successor and one predecessor: the link is
+  // paths and cycles, and v is regular when it is exactly one of them.
   std::vector<std::size_t> first(vertices + 1, 0);
   for(const auto& t : triangles)
     for(std::size_t v : t)
@@ -243,26 +241,39 @@ inline bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<st
   for(const auto& t : triangles)
     for(std::size_t i = 0; i < 3; ++i)
       link[fill[t[i]]++] = {std::uint32_t(t[(i + 1) % 3]), std::uint32_t(t[(i + 2) % 3])};
+  std::vector<std::uint8_t> has_predecessor;
   for(std::size_t v = 0; v < vertices; ++v)
   {
     const auto lo = link.begin() + std::ptrdiff_t(first[v]), hi = link.begin() + std::ptrdiff_t(first[v + 1]);
     const std::size_t degree = std::size_t(hi - lo);
     if(degree < 2)
       continue;
+    std::sort(lo, hi); // by link vertex: its successor is found by bisection
+    const auto successor_of = [&](std::uint32_t a) {
+      const auto e = std::lower_bound(lo, hi, a, [](const std::pair<std::uint32_t, std::uint32_t>& x, std::uint32_t y) {
+        return x.first < y;
+      });
+      return (e != hi && e->first == a) ? e : hi;
+    };
+    for(auto e = lo + 1; e != hi; ++e)
+      if(e->first == (e - 1)->first)
+        return false; // the directed edge v -> e->first twice
     // a path starts at a link vertex without predecessor
-    std::size_t starts = 0;
-    std::uint32_t start = lo->first;
+    has_predecessor.assign(degree, 0);
     for(auto e = lo; e != hi; ++e)
     {
-      bool has_predecessor = false;
-      for(auto g = lo; g != hi && !has_predecessor; ++g)
-        has_predecessor = g->second == e->first;
-      if(!has_predecessor)
+      const auto s = successor_of(e->second);
+      if(s != hi)
+        has_predecessor[std::size_t(s - lo)] = 1;
+    }
+    std::size_t starts = 0;
+    std::uint32_t start = lo->first;
+    for(std::size_t i = 0; i < degree; ++i)
+      if(!has_predecessor[i])
       {
         ++starts;
-        start = e->first;
+        start = (lo + std::ptrdiff_t(i))->first;
       }
-    }
     if(starts > 1)
       return false;
     // walk from the start: every link edge must be met
@@ -270,9 +281,7 @@ inline bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<st
     std::uint32_t at = start;
     for(;;)
     {
-      auto e = lo;
-      while(e != hi && e->first != at)
-        ++e;
+      const auto e = successor_of(at);
       if(e == hi)
         break;
       ++walked;
