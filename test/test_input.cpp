@@ -4,6 +4,7 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Evaluation/label_files.h>
 #include <SpectralSeg/IO/Atomic_output_file.h>
+#include <SpectralSeg/IO/internal/oriented_manifold_soup_to_mesh.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/IO/triangle_soup_to_mesh.h>
 #include <SpectralSeg/IO/write_face_values.h>
@@ -13,6 +14,7 @@
 #include <SpectralSeg/Weighted_dual_graph.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -648,6 +650,43 @@ TEST_CASE("an oriented manifold soup is recognised, a fan around one vertex of a
   IO::triangle_soup_to_mesh(points, broken, repaired); // the flipped triangle is turned
   CHECK(num_faces(repaired) == n);
   CHECK(CGAL::is_valid_polygon_mesh(repaired));
+
+  // The mesh is the one CGAL's polygon_soup_to_polygon_mesh() makes, halfedge
+  // for halfedge: on the fan (a border) and on a closed mesh with a hole cut.
+  Mesh elephant;
+  IO::read_mesh_file(SPECTRALSEG_SOURCE_DIR "/data/elephant.off", elephant);
+  std::vector<K::Point_3> elephant_points(elephant.points().begin(), elephant.points().end());
+  Triangles elephant_triangles;
+  for(Mesh::Face_index f : faces(elephant))
+    if(f.idx() != 5 && f.idx() != num_faces(elephant) / 2) // two holes
+    {
+      const Mesh::Halfedge_index h = halfedge(f, elephant);
+      elephant_triangles.push_back({target(h, elephant), target(next(h, elephant), elephant),
+                                    target(next(next(h, elephant), elephant), elephant)});
+    }
+  std::vector<K::Point_3> fan_points;
+  for(const auto& p : points)
+    fan_points.emplace_back(p[0], p[1], p[2]);
+  for(const auto& soup : {std::make_pair(&fan_points, &fan), std::make_pair(&elephant_points, &elephant_triangles)})
+  {
+    REQUIRE(is_oriented_manifold_soup(soup.first->size(), *soup.second));
+    Mesh cgal, direct;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(*soup.first, *soup.second, cgal);
+    IO::internal::oriented_manifold_soup_to_mesh(*soup.first, *soup.second, direct);
+    CHECK(CGAL::is_valid_polygon_mesh(direct));
+    REQUIRE(num_halfedges(direct) == num_halfedges(cgal));
+    REQUIRE(num_faces(direct) == num_faces(cgal));
+    std::size_t differ = 0;
+    for(Mesh::Halfedge_index h : halfedges(cgal))
+      differ += (target(h, cgal) != target(h, direct) || face(h, cgal) != face(h, direct) ||
+                 next(h, cgal) != next(h, direct)) ? 1 : 0;
+    for(Mesh::Face_index f : faces(cgal))
+      differ += halfedge(f, cgal) != halfedge(f, direct) ? 1 : 0;
+    for(Mesh::Vertex_index v : vertices(cgal))
+      differ += halfedge(v, cgal) != halfedge(v, direct) ? 1 : 0;
+    CHECK(differ == 0);
+    CHECK(CGAL::is_closed(direct) == CGAL::is_closed(cgal));
+  }
 }
 TEST_CASE("fuzz seeds are read and fuzz regressions never crash", "[input][hostile][fuzz]")
 {
