@@ -271,13 +271,15 @@ TEST_CASE("Ray casting: AABB backend on a cube", "[ray_casting]")
   CHECK(AABB_ray_caster::name() == "aabb");
   check_cube(caster, cube);
 
-  // Without skipping, a ray from a face centroid hits that face at distance 0.
+  // Without skipping, a ray from a face centroid does not meet that face
+  // (a hit at distance 0, under 1e-7 of the diagonal): it crosses the cube.
   for(AABB_ray_caster::size_type f = 0; f < cube.number_of_faces(); ++f)
   {
     AABB_ray_caster::size_type face = AABB_ray_caster::no_face;
     CHECK(caster.first_hit(cube.centroids[f], -cube.normals[f], AABB_ray_caster::no_face, &face) ==
-          Approx(0.).margin(1e-12));
-    CHECK(face == f);
+          Approx(1.).margin(1e-12));
+    CHECK(face != f);
+    CHECK(face != AABB_ray_caster::no_face);
   }
 }
 
@@ -292,14 +294,14 @@ TEST_CASE("Ray casting: Embree backend on a cube", "[ray_casting][embree]")
     const Embree_ray_caster caster(cube);
     check_cube(caster, cube);
 
-    // Embree only reports hits at t > 0: without skipping, a ray from a face
-    // centroid either hits that face at ~0 or (origin exactly on the face,
-    // as here) goes through it to the opposite side.
+    // As with AABB: without skipping, a ray from a face centroid does not
+    // meet that face (under 1e-7 of the diagonal) and crosses the cube.
     for(Embree_ray_caster::size_type f = 0; f < cube.number_of_faces(); ++f)
     {
       Embree_ray_caster::size_type face = Embree_ray_caster::no_face;
       const double t = caster.first_hit(cube.centroids[f], -cube.normals[f], Embree_ray_caster::no_face, &face);
-      CHECK((t < 1e-6 || std::abs(t - 1.) < 1e-6));
+      CHECK(t == Approx(1.).margin(1e-5));
+      CHECK(face != f);
       CHECK(face != Embree_ray_caster::no_face);
     }
   }
@@ -474,6 +476,39 @@ TEST_CASE("Ray casting: Embree agrees with AABB on a sphere", "[ray_casting][emb
 }
 
 #endif
+
+TEMPLATE_TEST_CASE("Ray casting: hits closer than 1e-7 of the diagonal do not count; a flat fan", "[ray_casting]",
+                   SPECTRALSEG_TEST_RAY_CASTERS)
+{
+  const Mesh_geometry cube = unit_cube(); // diagonal sqrt(3)
+  const TestType caster(cube);
+  const double near = 1e-7 * std::sqrt(3.);
+  // towards the face x = 0.5 from just inside it: too close, then far enough
+  CHECK(caster.first_hit(Eigen::Vector3d(0.5 - 0.1 * near, 0.1, 0.2), Eigen::Vector3d::UnitX()) == infinity);
+  CHECK(caster.first_hit(Eigen::Vector3d(0.5 - 10. * near, 0.1, 0.2), Eigen::Vector3d::UnitX()) ==
+        Approx(10. * near).margin(near));
+
+  // A flat disc of 20,000 triangles around one vertex: every bounding box
+  // touches the centre's region, and the rays leaving the plane from the
+  // faces' centroids meet nothing (each would enter a fifth of the boxes
+  // at distance 0 if hits at 0 counted).
+  const std::size_t n = 20000;
+  Mesh_geometry fan;
+  fan.points.emplace_back(0., 0., 0.);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double a = 2. * CGAL_PI * double(i) / double(n);
+    fan.points.emplace_back(std::cos(a), std::sin(a), 0.);
+    fan.triangles.push_back({0, std::uint32_t(1 + i), std::uint32_t(1 + (i + 1) % n)});
+  }
+  fan.compute_face_attributes();
+  const TestType flat(fan);
+  std::size_t hits = 0;
+  for(std::size_t f = 0; f < n; f += 7)
+    for(const Eigen::Vector3d& d : {Eigen::Vector3d(0.3, 0.2, 1.).normalized(), Eigen::Vector3d(-0.1, 0.4, -1.).normalized()})
+      hits += std::isfinite(flat.first_hit(fan.centroids[f], d, typename TestType::size_type(f))) ? 1 : 0;
+  CHECK(hits == 0);
+}
 
 TEMPLATE_TEST_CASE("Ray casting: concurrent queries", "[ray_casting]", SPECTRALSEG_TEST_RAY_CASTERS)
 {

@@ -57,6 +57,11 @@ public:
   /// \param skip a face to ignore, typically the face the origin lies on
   ///        (`no_face`: ignore nothing)
   /// \param hit_face if not null, receives the face hit, or `no_face`
+  /// Hits closer to `origin` than \f$10^{-7}\f$ times the bounding-box
+  /// diagonal of the mesh may be left out (both provided models leave them
+  /// out, so that a ray leaving a flat region does not enter every box that
+  /// touches its origin).
+  ///
   /// \param max_distance the caller only needs hits closer than this: a ray
   ///        that meets nothing closer may return `+infinity` early, but a
   ///        closer hit must be returned exactly (default `+infinity`: no

@@ -6,6 +6,7 @@
 #define SPECTRALSEG_RAY_CASTING_AABB_RAY_CASTER_H
 
 #include <SpectralSeg/Mesh_geometry.h>
+#include <SpectralSeg/Ray_casting/internal/near_distance.h>
 
 #include <CGAL/version.h>
 #include <CGAL/AABB_tree.h>
@@ -74,6 +75,7 @@ public:
     tree_.insert(triangles_.cbegin(), triangles_.cend());
     tree_.build();
     diagonal_ = geometry.bbox_diagonal;
+    near_ = internal::near_distance_fraction * diagonal_;
   }
 
   AABB_ray_caster(const AABB_ray_caster&) = delete;
@@ -86,7 +88,11 @@ public:
   /// face hit, ignoring face `skip`; `+infinity` if the ray hits nothing.
   /// If `hit_face` is not null it receives the face hit (or `no_face`).
   /// With a finite `max_distance`, only hits at most that far count (the
-  /// search skips the boxes beyond it).
+  /// search skips the boxes beyond it). Hits closer than \f$10^{-7}\f$
+  /// times the bounding-box diagonal of the mesh do not count: a ray
+  /// leaving a face does not meet the faces at its origin by rounding, and
+  /// a ray leaving a flat region does not enter every box that touches its
+  /// origin (a fan of a million triangles around one vertex).
   double first_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, size_type skip = no_face,
                    size_type* hit_face = nullptr,
                    double max_distance = std::numeric_limits<double>::infinity()) const
@@ -99,7 +105,7 @@ public:
     // nearer boxes first: a node is entered only when the ray's stretch up
     // to the nearest hit so far crosses its box (slab test), and each
     // triangle is intersected with Moller-Trumbore.
-    Nearest_hit query(origin, direction, max_distance,
+    Nearest_hit query(origin, direction, near_, max_distance,
                       skip == no_face ? triangles_.cend() : triangle_of_face(skip));
     tree_.traversal_with_priority(query, query);
     if(!query.found)
@@ -125,13 +131,14 @@ private:
   struct Nearest_hit
   {
     double o[3], d[3], inv[3];
+    double near;  // hits closer than this do not count
     double t;     // the nearest hit so far, or the bound
     bool found = false;
     Iterator hit, skip;
 
-    Nearest_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double max_distance,
-                Iterator skipped)
-      : t(max_distance), skip(skipped)
+    Nearest_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double near_distance,
+                double max_distance, Iterator skipped)
+      : near(near_distance), t(max_distance), skip(skipped)
     {
       for(int i = 0; i < 3; ++i)
       {
@@ -145,10 +152,10 @@ private:
 
     typedef double Priority;
 
-    // where the ray's stretch [0, t] enters the box, or -1 if it misses it
+    // where the ray's stretch [near, t] enters the box, or -1 if it misses it
     double entry(const CGAL::Bbox_3& b) const
     {
-      double lo = 0., hi = t;
+      double lo = near, hi = t;
       for(int i = 0; i < 3; ++i)
       {
         double a = (b.min(i) - o[i]) * inv[i], c = (b.max(i) - o[i]) * inv[i];
@@ -205,7 +212,7 @@ private:
       if(v < 0. || u + v > 1.)
         return;
       const double h = f * (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]);
-      if(h >= 0. && h <= t && (!found || h < t || it < hit))
+      if(h >= near && h <= t && (!found || h < t || it < hit))
       {
         t = h;
         hit = it;
@@ -227,6 +234,7 @@ private:
   std::vector<size_type> face_of_triangle_;
   Tree tree_;
   double diagonal_ = 0.;
+  double near_ = 0.;
 };
 
 } // namespace Ray_casting

@@ -9,6 +9,7 @@
 #ifdef SPECTRALSEG_HAS_EMBREE
 
 #include <SpectralSeg/Mesh_geometry.h>
+#include <SpectralSeg/Ray_casting/internal/near_distance.h>
 #include <SpectralSeg/exceptions.h>
 
 #include <embree3/rtcore.h>
@@ -52,10 +53,13 @@ namespace Ray_casting {
 ///   (`RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION`; the context is extended with
 ///   the primitive to skip and lives on the stack of each query), not by
 ///   moving the start of the ray.
-/// - **Ray start.** Embree only reports hits at a distance strictly greater
-///   than zero, so a face through which the origin passes exactly (after
-///   rounding to `float`) is not hit; `AABB_ray_caster` reports it at
-///   distance 0. Pass the face the origin lies on as `skip`.
+/// - **Ray start.** As in `AABB_ray_caster`, hits closer than \f$10^{-7}\f$
+///   times the bounding-box diagonal of the mesh are not counted (Embree's
+///   `tnear`): a ray leaving a face does not meet the faces at its origin
+///   by rounding, and a ray leaving a flat region does not enter every box
+///   that touches its origin (a fan of a million triangles around one
+///   vertex: minutes per hundred rays without it). Pass the face the origin
+///   lies on as `skip`.
 /// - Degenerate faces (`Mesh_geometry::degenerate`) are left out, as in
 ///   `AABB_ray_caster`.
 ///
@@ -106,7 +110,10 @@ public:
       face_of_primitive_.push_back(static_cast<size_type>(f));
     }
     if(!face_of_primitive_.empty())
+    {
       centre_ = 0.5 * (lo + hi);
+      tnear_ = float(internal::near_distance_fraction * geometry.bbox_diagonal);
+    }
 
     scene_.reset(rtcNewScene(device_.get()));
     bool triangles_attached = face_of_primitive_.empty();
@@ -184,7 +191,7 @@ public:
     ray.org_x = o.x();
     ray.org_y = o.y();
     ray.org_z = o.z();
-    ray.tnear = 0.f;
+    ray.tnear = tnear_;
     ray.dir_x = d.x();
     ray.dir_y = d.y();
     ray.dir_z = d.z();
@@ -232,7 +239,7 @@ public:
         packet.ray.org_x[i] = o.x();
         packet.ray.org_y[i] = o.y();
         packet.ray.org_z[i] = o.z();
-        packet.ray.tnear[i] = 0.f;
+        packet.ray.tnear[i] = tnear_;
         packet.ray.dir_x[i] = d.x();
         packet.ray.dir_y[i] = d.y();
         packet.ray.dir_z[i] = d.z();
@@ -336,6 +343,7 @@ private:
   std::unique_ptr<std::remove_pointer_t<RTCScene>, Scene_release> scene_;
   std::vector<size_type> face_of_primitive_; // primID -> face index
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();
+  float tnear_ = 0.f;
 };
 
 } // namespace Ray_casting
