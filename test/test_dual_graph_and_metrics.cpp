@@ -6,6 +6,7 @@
 #include "../benchmark/subdivide.h"
 
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/internal/contact_adjacencies.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
 #include <SpectralSeg/IO/write_colored_mesh.h>
 #include <SpectralSeg/IO/write_segment_parts.h>
@@ -521,6 +522,50 @@ TEST_CASE("make_dual_graph joins parts that touch, links specks, keeps large sep
   // no specks: C stays apart too
   CHECK(make_dual_graph(m, parameters::speck_area_fraction(0.)).number_of_components() == 3);
   CHECK_THROWS_AS(make_dual_graph(m, parameters::contact_distance(-1.)), Invalid_input);
+}
+
+TEST_CASE("two large fans touching at one point get the contact of their nearest faces", "[dual_graph][contacts]")
+{
+  // two cones of n slivers each, apices at the same point but separate
+  // vertices (a split non-manifold vertex): their nearest pair of faces
+  // among n x n, found through a search tree above 64 x 64 pairs
+  for(const std::size_t n : {std::size_t(40), std::size_t(3000)})
+  {
+    Mesh_geometry geo;
+    geo.points.push_back(Eigen::Vector3d::Zero());
+    geo.points.push_back(Eigen::Vector3d::Zero());
+    for(int side = 0; side < 2; ++side)
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        const double a = 2. * CGAL_PI * (double(i) + 0.37 * side) / double(n);
+        geo.points.emplace_back(std::cos(a), std::sin(a) * (1. + 0.1 * side), side ? -1. - 0.001 * double(i % 7) : 1.);
+      }
+    for(std::uint32_t side = 0; side < 2; ++side)
+      for(std::uint32_t i = 0; i < n; ++i)
+        geo.triangles.push_back({side, std::uint32_t(2 + side * n + i), std::uint32_t(2 + side * n + (i + 1) % n)});
+    geo.compute_face_attributes();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> adjacent;
+    for(std::uint32_t side = 0; side < 2; ++side)
+      for(std::uint32_t i = 0; i < n; ++i)
+        adjacent.emplace_back(side * n + i, side * n + (i + 1) % n);
+    const std::vector<SpectralSeg::internal::Contact> contacts =
+      SpectralSeg::internal::contact_adjacencies(geo, adjacent, 0., 0.);
+    REQUIRE(contacts.size() == 1);
+    double best = std::numeric_limits<double>::infinity();
+    std::pair<std::uint32_t, std::uint32_t> nearest(0, 0);
+    for(std::uint32_t f = 0; f < n; ++f)
+      for(std::uint32_t g = std::uint32_t(n); g < 2 * n; ++g)
+      {
+        const double d = (geo.centroids[f] - geo.centroids[g]).squaredNorm();
+        if(d < best)
+        {
+          best = d;
+          nearest = {f, g};
+        }
+      }
+    CHECK(std::min(contacts[0].f0, contacts[0].f1) == nearest.first);
+    CHECK(std::max(contacts[0].f0, contacts[0].f1) == nearest.second);
+  }
 }
 
 TEST_CASE("write_segmented_mesh: PLY vertices copied per segment, labels, binary, OBJ materials, parts",

@@ -88,13 +88,35 @@ SPECTRALSEG_INLINE std::vector<Contact> contact_adjacencies(
            3.;
   };
 
-  // a contact between the nearest two faces of the fans of va and vb
+  // a contact between the nearest two faces of the fans of va and vb (the
+  // first such pair in the order of the fans)
   const auto contact = [&](std::uint32_t va, std::uint32_t vb) {
     double best = std::numeric_limits<double>::infinity();
     Contact c{0, 0, va, vb, 0.};
-    for(std::size_t x = first[va]; x < first[va + 1]; ++x)
+    const std::size_t pairs = (first[va + 1] - first[va]) * (first[vb + 1] - first[vb]);
+    if(pairs <= 4096)
+      for(std::size_t x = first[va]; x < first[va + 1]; ++x)
+        for(std::size_t y = first[vb]; y < first[vb + 1]; ++y)
+        {
+          const double d = (geo.centroids[around[x]] - geo.centroids[around[y]]).squaredNorm();
+          if(d < best)
+          {
+            best = d;
+            c.f0 = around[x];
+            c.f1 = around[y];
+          }
+        }
+    else
+    {
+      // two large fans (a vertex of high degree split in two): the nearest
+      // face of vb's fan to each of va's from a search tree, not every pair
+      std::vector<Eigen::Vector3d> fan;
       for(std::size_t y = first[vb]; y < first[vb + 1]; ++y)
+        fan.push_back(geo.centroids[around[y]]);
+      const Point_neighbours fan_tree(fan);
+      for(std::size_t x = first[va]; x < first[va + 1]; ++x)
       {
+        const std::size_t y = first[vb] + fan_tree.nearest(geo.centroids[around[x]], 1).front().first;
         const double d = (geo.centroids[around[x]] - geo.centroids[around[y]]).squaredNorm();
         if(d < best)
         {
@@ -103,6 +125,7 @@ SPECTRALSEG_INLINE std::vector<Contact> contact_adjacencies(
           c.f1 = around[y];
         }
       }
+    }
     c.length = 0.5 * (mean_edge(c.f0) + mean_edge(c.f1));
     return c;
   };
