@@ -524,6 +524,40 @@ TEST_CASE("make_dual_graph joins parts that touch, links specks, keeps large sep
   CHECK_THROWS_AS(make_dual_graph(m, parameters::contact_distance(-1.)), Invalid_input);
 }
 
+TEST_CASE("many separate specks whose nearest vertices are their own are all linked", "[dual_graph][contacts]")
+{
+  // 150 boxes of 3 x 3 squares a side, each under 1% of the area and two
+  // box widths from the next: every vertex's 12 nearest vertices are its
+  // own box's, so each speck is linked through an exact search
+  const test_meshes::Soup box = test_meshes::welded(test_meshes::box(1., 1., 1., 3));
+  test_meshes::Soup all;
+  for(int b = 0; b < 150; ++b)
+  {
+    const std::size_t base = all.points.size();
+    for(auto p : box.points)
+    {
+      p[0] += 3. * (b % 6);
+      p[1] += 3. * ((b / 6) % 5);
+      p[2] += 3. * (b / 30);
+      all.points.push_back(p);
+    }
+    for(auto f : box.faces)
+    {
+      for(auto& v : f)
+        v += base;
+      all.faces.push_back(f);
+    }
+  }
+  const Mesh m = test_meshes::to_mesh<Mesh>(all);
+  const Dual_graph g = make_dual_graph(m);
+  CHECK(g.number_of_components() == 1);
+  std::size_t contacts = 0;
+  for(const auto& e : g.edges())
+    contacts += e.contact ? 1 : 0;
+  CHECK(contacts == 149); // one link per speck joined: a spanning tree of the boxes
+  CHECK(make_dual_graph(m, parameters::speck_area_fraction(0.)).number_of_components() == 150);
+}
+
 TEST_CASE("two large fans touching at one point get the contact of their nearest faces", "[dual_graph][contacts]")
 {
   // two cones of n slivers each, apices at the same point but separate

@@ -234,26 +234,58 @@ SPECTRALSEG_INLINE std::vector<Contact> contact_adjacencies(
     }
     if(linked)
       continue;
-    // every speck's nearest vertices are its own: the smallest speck is
-    // linked exactly, through a search tree of the other parts' vertices
-    const std::size_t p = order.front();
-    std::vector<Eigen::Vector3d> others;
-    std::vector<std::uint32_t> other_vertex;
+    // every speck's nearest vertices are its own: each speck is linked to
+    // the nearest vertex of another part, exactly, smallest speck first.
+    // Its m vertices ask the search tree of all vertices for their m + 1
+    // nearest (at most m of them are its own) when m * m is below the
+    // number of vertices, else a tree of the other parts' vertices is built
+    // for it; one round for all such specks, not one per speck (1,500
+    // separate boxes: 46 s when each round linked the smallest speck only)
+    const std::size_t none = std::size_t(-1);
+    std::vector<std::size_t> slot(nf, none);
+    for(std::size_t k = 0; k < order.size(); ++k)
+      slot[order[k]] = k;
+    std::vector<std::vector<std::size_t>> members(order.size());
     for(std::size_t i = 0; i < positions.size(); ++i)
-      if(part_of(vertex_of[i]) != p)
+    {
+      const std::size_t k = slot[part_of(vertex_of[i])];
+      if(k != none)
+        members[k].push_back(i);
+    }
+    for(std::size_t k = 0; k < order.size(); ++k)
+    {
+      const std::size_t p = order[k];
+      Link best;
+      const std::size_t m = members[k].size();
+      if(m * m <= positions.size())
       {
-        others.push_back(positions[i]);
-        other_vertex.push_back(vertex_of[i]);
+        for(const std::size_t i : members[k])
+          for(const auto& q : tree.nearest(positions[i], m + 1))
+            if(part_of(vertex_of[q.first]) != p &&
+               vertex_less(q.second, vertex_of[i], vertex_of[q.first], best.d, best.a, best.b))
+              best = Link{q.second, vertex_of[i], vertex_of[q.first]};
       }
-    const Point_neighbours other_tree(others);
-    Link best;
-    for(std::size_t i = 0; i < positions.size(); ++i)
-      if(part_of(vertex_of[i]) == p)
-        for(const auto& q : other_tree.nearest(positions[i], 1))
-          if(vertex_less(q.second, vertex_of[i], other_vertex[q.first], best.d, best.a, best.b))
-            best = Link{q.second, vertex_of[i], other_vertex[q.first]};
-    out.push_back(contact(best.a, best.b));
-    sets.union_set(out.back().f0, out.back().f1);
+      else
+      {
+        std::vector<Eigen::Vector3d> others;
+        std::vector<std::uint32_t> other_vertex;
+        for(std::size_t i = 0; i < positions.size(); ++i)
+          if(part_of(vertex_of[i]) != p)
+          {
+            others.push_back(positions[i]);
+            other_vertex.push_back(vertex_of[i]);
+          }
+        const Point_neighbours other_tree(others);
+        for(const std::size_t i : members[k])
+          for(const auto& q : other_tree.nearest(positions[i], 1))
+            if(vertex_less(q.second, vertex_of[i], other_vertex[q.first], best.d, best.a, best.b))
+              best = Link{q.second, vertex_of[i], other_vertex[q.first]};
+      }
+      if(!std::isfinite(best.d) || sets.find_set(around[first[best.a]]) == sets.find_set(around[first[best.b]]))
+        continue;
+      out.push_back(contact(best.a, best.b));
+      sets.union_set(out.back().f0, out.back().f1);
+    }
   }
 
   // one contact per pair of faces
