@@ -74,8 +74,7 @@ public:
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
     tree_.build();
-    diagonal_ = geometry.bbox_diagonal;
-    near_ = internal::near_distance_fraction * diagonal_;
+    near_ = internal::near_distance_fraction * geometry.bbox_diagonal;
   }
 
   AABB_ray_caster(const AABB_ray_caster&) = delete;
@@ -233,8 +232,7 @@ private:
   std::vector<K::Triangle_3> triangles_;
   std::vector<size_type> face_of_triangle_;
   Tree tree_;
-  double diagonal_ = 0.;
-  double near_ = 0.;
+  double near_ = 0.; // hits closer than this do not count
 };
 
 } // namespace Ray_casting
