@@ -218,19 +218,25 @@ inline Soup t_shape(int s)
   return voxel_union(cells, s);
 }
 
+// Appends the cells of the block [0, nx) x [0, ny) x [0, nz), as part 0.
+inline void add_block(int nx, int ny, int nz, std::vector<std::array<int, 3>>& cells, std::vector<int>& part)
+{
+  for(int x = 0; x < nx; ++x)
+    for(int y = 0; y < ny; ++y)
+      for(int z = 0; z < nz; ++z)
+      {
+        cells.push_back({x, y, z});
+        part.push_back(0);
+      }
+}
+
 // A body (a 4 x 4 x 4 block of cells, part 0) with four limbs of 6 x 2 x 2
 // cells along +x, -x, +y and -y (parts 1 to 4): a shape with five known parts.
 inline Soup star(int s)
 {
   std::vector<std::array<int, 3>> cells;
   std::vector<int> part;
-  for(int x = 0; x < 4; ++x)
-    for(int y = 0; y < 4; ++y)
-      for(int z = 0; z < 4; ++z)
-      {
-        cells.push_back({x, y, z});
-        part.push_back(0);
-      }
+  add_block(4, 4, 4, cells, part);
   for(int t = 0; t < 6; ++t)
     for(int a = 1; a < 3; ++a)
       for(int z = 1; z < 3; ++z)
@@ -255,13 +261,7 @@ inline Soup block_with_handles(int s, int handles)
 {
   std::vector<std::array<int, 3>> cells;
   std::vector<int> part;
-  for(int x = 0; x < 4; ++x)
-    for(int y = 0; y < 4; ++y)
-      for(int z = 0; z < 8; ++z)
-      {
-        cells.push_back({x, y, z});
-        part.push_back(0);
-      }
+  add_block(4, 4, 8, cells, part);
   std::set<std::array<int, 3>> arch;
   for(int h = 0; h < handles; ++h)
   {
