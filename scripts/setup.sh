@@ -13,14 +13,14 @@ set -euo pipefail
 # ICU, regex, serialization and test) -- 195 packages, 148 MB
 TOOL_PACKAGES=(
   g++ make cmake ninja-build
-  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev libmaxflow-dev
   libeigen3-dev libspectra-dev
   libtbb-dev libembree-dev
   libcli11-dev nlohmann-json3-dev libpng-dev
 )
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
-  libcgal-dev libgmp-dev libmpfr-dev
+  libcgal-dev libgmp-dev libmpfr-dev libmaxflow-dev
   libeigen3-dev libspectra-dev
   libboost-dev libboost-program-options-dev
   libtbb-dev libembree-dev libopenmesh-dev

@@ -2,7 +2,7 @@
 # README's example project (test/install_consumer) against it.
 # Invoked by CTest with -DSOURCE_DIR=... -DBUILD_DIR=... -DWORK=... -DDATA=...
 # -DVERSION=... -DGENERATOR=... -DTOOL=<path of the built tool, or empty>
-# -DWITH_TBB=... -DWITH_EMBREE=... -DWITH_RENDERING=...
+# -DWITH_TBB=... -DWITH_EMBREE=... -DWITH_RENDERING=... -DWITH_LIBMAXFLOW=...
 #
 # Checks, each of which failed before install worked from any configure:
 # 1. `cmake --install` of this build installs the headers, the package
@@ -107,6 +107,11 @@ endif()
 if(WITH_RENDERING)
   list(APPEND components Rendering)
 endif()
+set(maxflow3 "")
+if(WITH_LIBMAXFLOW)
+  string(APPEND expect_definitions ";SPECTRALSEG_HAS_LIBMAXFLOW")
+  set(maxflow3 ";SPECTRALSEG_HAS_LIBMAXFLOW")
+endif()
 string(REPLACE ";" "," components_arg "${components}")
 run(${CMAKE_COMMAND} -S ${probe} -B ${probe}/found -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix}
     "-DCOMPONENTS=${components_arg}" ${cgal_args})
@@ -117,7 +122,7 @@ elseif(NOT out MATCHES "definitions ${expect_definitions}\n")
 endif()
 run(${CMAKE_COMMAND} -S ${probe} -B ${probe}/without -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix}
     -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCMAKE_DISABLE_FIND_PACKAGE_embree=ON ${cgal_args})
-if(NOT rc EQUAL 0 OR NOT out MATCHES "TBB FALSE Embree FALSE Rendering [A-Z]+ definitions SPECTRALSEG_USE_MAXFLOW\n")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "TBB FALSE Embree FALSE Rendering [A-Z]+ definitions SPECTRALSEG_USE_MAXFLOW${maxflow3}\n")
   fail("a consumer without TBB and Embree must find SpectralSeg, without them: ${out}")
 endif()
 run(${CMAKE_COMMAND} -S ${probe} -B ${probe}/required -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix}

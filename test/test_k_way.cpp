@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <set>
 #include <string>
 
@@ -975,26 +976,56 @@ TEST_CASE("alpha expansion: no expansion move improves its result, out-of-reach 
       }
     }
   const double before = p.energy(l);
+  const std::vector<std::size_t> start = l;
   std::vector<std::size_t> l2 = l;
+#ifdef SPECTRALSEG_USE_MAXFLOW
+  std::vector<std::size_t> l3 = l, l4 = l;
+#endif
   const double after = Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, l);
   CHECK(after < before);
   // two threads: the same moves, bit for bit
   CHECK(Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, l2, 2) == after);
   CHECK(l2 == l);
   CHECK(after == Approx(p.energy(l)).epsilon(1e-12));
+#ifdef SPECTRALSEG_USE_MAXFLOW
+  // MaxFlow (one max-flow object serving every move of a thread): the same
+  // moves as Boost's max flow
+  CHECK(Refinement::internal::alpha_expansion<Refinement::internal::Maxflow_impl>(p, l3) == Approx(after).epsilon(1e-12));
+  CHECK(l3 == l);
+  CHECK(Refinement::internal::alpha_expansion<Refinement::internal::Maxflow_impl>(p, l4, 2) == Approx(after).epsilon(1e-12));
+  CHECK(l4 == l);
+#endif
   for(std::size_t v = 0; v < p.vertices; ++v)
     CHECK(std::isfinite(p.cost_of(v, l[v])));
   // a local minimum: no label's expansion lowers the energy any more
   const Refinement::internal::Potts_adjacency adjacency(p);
   std::vector<std::size_t> candidate(p.vertices, std::size_t(-1));
+  std::unique_ptr<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl> flow;
   for(std::size_t alpha = 0; alpha < p.labels; ++alpha)
   {
     double delta = 0.;
-    Refinement::internal::best_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, adjacency, l, alpha,
-                                                                                              candidate, delta);
+    Refinement::internal::best_expansion(p, adjacency, l, alpha, candidate, delta, flow);
     INFO("alpha " << alpha);
     CHECK(delta >= -1e-9);
   }
+#ifdef SPECTRALSEG_USE_MAXFLOW
+  // and from the start, move after move with one MaxFlow object: the
+  // answers of a fresh object each time
+  std::unique_ptr<Refinement::internal::Maxflow_impl> reused;
+  std::size_t moved = 0;
+  for(std::size_t alpha = 0; alpha < p.labels; ++alpha)
+  {
+    double delta = 0., fresh_delta = 0.;
+    std::unique_ptr<Refinement::internal::Maxflow_impl> fresh;
+    const std::vector<std::size_t> taken =
+      Refinement::internal::best_expansion(p, adjacency, start, alpha, candidate, delta, reused);
+    INFO("alpha " << alpha);
+    CHECK(taken == Refinement::internal::best_expansion(p, adjacency, start, alpha, candidate, fresh_delta, fresh));
+    CHECK(delta == fresh_delta);
+    moved += taken.size();
+  }
+  CHECK(moved > 0);
+#endif
 }
 
 TEST_CASE("alpha expansion on several threads: the moves of one thread, bit for bit", "[graphcut][threads]")

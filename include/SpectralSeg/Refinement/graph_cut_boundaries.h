@@ -50,9 +50,12 @@ enum class Graph_cut_backend
   /// the same on a compressed sparse row graph (faster to build; needs
   /// `graph_cut_boost_backends.h` when `SPECTRALSEG_USE_MAXFLOW` is defined)
   boost_compressed_sparse_row,
-  /// Kolmogorov's MaxFlow code shipped with CGAL's Surface_mesh_segmentation
-  /// (GPL); available when `SPECTRALSEG_USE_MAXFLOW` is defined before
-  /// including this header; fastest, and may give other (equally minimal) cuts
+  /// Kolmogorov's MaxFlow code (GPL); available when
+  /// `SPECTRALSEG_USE_MAXFLOW` is defined before including this header:
+  /// version 3 (Debian's `libmaxflow-dev`, its headers) with
+  /// `SPECTRALSEG_HAS_LIBMAXFLOW`, else version 2.2, shipped with CGAL's
+  /// Surface_mesh_segmentation (the same cuts, slower on large meshes);
+  /// fastest, and may give other (equally minimal) cuts than Boost's
   maxflow
 };
 
@@ -502,7 +505,7 @@ SPECTRALSEG_INLINE void solve_graph_cut(const Graph_cut_problem& cut, std::vecto
 #ifdef SPECTRALSEG_USE_MAXFLOW
     alpha_expansion<Maxflow_impl>(problem, l, threads);
 #else
-    throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code from CGAL)");
+    throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code)");
 #endif
   }
   else

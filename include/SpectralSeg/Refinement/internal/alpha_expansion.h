@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <future>
 #include <limits>
+#include <memory>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -126,10 +128,22 @@ struct Potts_adjacency
 // proportional to its candidates and their edges, not to the problem.
 // Returns the vertices that took alpha (`l` unchanged) and, in `delta`,
 // the change of energy if they do.
+// Whether a max-flow class can serve move after move: it has reserve(),
+// which empties its graph and makes room for the next one's vertices and
+// edges. The others are made again for every move.
+template <typename MaxFlow, typename = void>
+struct Reusable_max_flow : std::false_type
+{};
+template <typename MaxFlow>
+struct Reusable_max_flow<MaxFlow, std::void_t<decltype(std::declval<MaxFlow&>().reserve(std::size_t(), std::size_t()))>>
+  : std::true_type
+{};
+
 template <typename MaxFlow>
 std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adjacency& adjacency,
                                         const std::vector<std::size_t>& l, std::size_t alpha,
-                                        std::vector<std::size_t>& candidate, double& delta)
+                                        std::vector<std::size_t>& candidate, double& delta,
+                                        std::unique_ptr<MaxFlow>& flow_object)
 {
   typedef typename MaxFlow::Vertex_descriptor Vertex;
   const std::size_t none = std::size_t(-1);
@@ -145,7 +159,10 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
     return {};
   // t-weights: cost of taking alpha, cost of keeping the label, with the
   // edges to the vertices that are not candidates as constants
+  // (and the size of the max-flow graph: an edge between two candidates of
+  // different labels takes a vertex and two edges, of the same label one)
   std::vector<double> take(vertex_of.size()), keep(vertex_of.size());
+  std::size_t graph_vertices = vertex_of.size(), graph_edges = 0;
   for(std::size_t i = 0; i < vertex_of.size(); ++i)
   {
     const std::size_t v = vertex_of[i];
@@ -155,7 +172,15 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
     {
       const std::size_t u = adjacency.neighbour[j].first;
       if(candidate[u] != none)
+      {
+        if(candidate[u] > i)
+        {
+          const bool between = l[u] != l[v];
+          graph_vertices += between;
+          graph_edges += 1 + between;
+        }
         continue;
+      }
       if(l[u] != alpha)
         take[i] += adjacency.neighbour[j].second;
       if(l[u] != l[v])
@@ -163,8 +188,18 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
     }
   }
 
-  MaxFlow flow;
-  flow.clear_graph();
+  if constexpr(Reusable_max_flow<MaxFlow>::value)
+  {
+    if(!flow_object)
+      flow_object = std::make_unique<MaxFlow>();
+    flow_object->reserve(graph_vertices, graph_edges);
+  }
+  else
+  {
+    flow_object = std::make_unique<MaxFlow>();
+    flow_object->clear_graph();
+  }
+  MaxFlow& flow = *flow_object;
   std::vector<Vertex> vertex(vertex_of.size());
   for(std::size_t i = 0; i < vertex_of.size(); ++i)
   {
@@ -252,6 +287,7 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsi
   const double tolerance = 1e-12;
   const Potts_adjacency adjacency(p);
   std::vector<std::size_t> candidate(p.vertices, none), other_candidate;
+  std::unique_ptr<MaxFlow> flow, other_flow; // one per thread
   const bool pairs = threads > 1 && p.labels > 2;
   if(pairs)
     other_candidate.assign(p.vertices, none);
@@ -314,16 +350,16 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsi
       double delta = 0.;
       if(!pairs || beta == p.labels)
       {
-        const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta);
+        const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta, flow);
         improved |= apply(alpha, taken, delta);
         ++alpha;
         continue;
       }
       double beta_delta = 0.;
       std::future<std::vector<std::size_t>> beta_move = std::async(std::launch::async, [&] {
-        return best_expansion<MaxFlow>(p, adjacency, l, beta, other_candidate, beta_delta);
+        return best_expansion<MaxFlow>(p, adjacency, l, beta, other_candidate, beta_delta, other_flow);
       });
-      const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta);
+      const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta, flow);
       const std::vector<std::size_t> beta_taken = beta_move.get();
       const bool moved = apply(alpha, taken, delta);
       improved |= moved;
