@@ -987,6 +987,36 @@ TEST_CASE("alpha expansion: no expansion move improves its result, out-of-reach 
   CHECK(Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, l2, 2) == after);
   CHECK(l2 == l);
   CHECK(after == Approx(p.energy(l)).epsilon(1e-12));
+  // one sweep (Graph_cut_options::sweeps = 1): each label's move once, in
+  // order, on one thread or two alike; here more sweeps still lower the
+  // energy, and a second one continues from the first
+  std::vector<std::size_t> once = start, once2 = start, by_hand = start;
+  const double one_sweep =
+    Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, once, 1, 1);
+  CHECK(Refinement::internal::alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(p, once2, 2, 1) ==
+        one_sweep);
+  CHECK(once2 == once);
+  CHECK(one_sweep < before);
+  CHECK(one_sweep > after + 1e-9);
+  {
+    const Refinement::internal::Potts_adjacency adjacency(p);
+    std::vector<std::size_t> candidate(p.vertices, std::size_t(-1));
+    std::unique_ptr<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl> flow;
+    double energy = before;
+    for(std::size_t alpha = 0; alpha < p.labels; ++alpha)
+    {
+      double delta = 0.;
+      const std::vector<std::size_t> taken =
+        Refinement::internal::best_expansion(p, adjacency, by_hand, alpha, candidate, delta, flow);
+      if(!taken.empty() && delta < -1e-12 * std::abs(energy))
+      {
+        energy += delta;
+        for(std::size_t v : taken)
+          by_hand[v] = alpha;
+      }
+    }
+    CHECK(by_hand == once);
+  }
 #ifdef SPECTRALSEG_USE_MAXFLOW
   // MaxFlow (one max-flow object serving every move of a thread): the same
   // moves as Boost's max flow

@@ -91,8 +91,8 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
   cmd->add_option("--samples", o.samples, "Nyström samples (default: one more than the K-means clusters)")->check(Count(0, max_samples));
   cmd->add_flag("--no-graph-cut", o.no_graph_cut, "skip the graph-cut boundary enhancement");
   cmd->add_option("--graph-cut", o.graph_cut,
-                  "graph-cut settings: banded (a strong smoothness term acting near the boundaries) or thesis "
-                  "(the thesis's weak smoothness term, every face free)")
+                  "graph-cut settings: banded (a strong smoothness term acting near the boundaries, one sweep of moves) or thesis "
+                  "(the thesis's weak smoothness term, every face free, moves until none helps)")
     ->check(CLI::IsMember({"banded", "thesis"}))
     ->capture_default_str();
   cmd->add_option("--crease-angle", o.crease_angle,

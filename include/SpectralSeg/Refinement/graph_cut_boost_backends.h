@@ -30,14 +30,16 @@ namespace Refinement {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-inline void boost_adjacency_list_max_flow(const Potts_problem& problem, std::vector<std::size_t>& l, unsigned threads)
+inline void boost_adjacency_list_max_flow(const Potts_problem& problem, std::vector<std::size_t>& l, unsigned threads,
+                                          std::size_t sweeps)
 {
-  alpha_expansion<CGAL::Alpha_expansion_boost_adjacency_list_impl>(problem, l, threads);
+  alpha_expansion<CGAL::Alpha_expansion_boost_adjacency_list_impl>(problem, l, threads, sweeps);
 }
 
-inline void boost_compressed_sparse_row_max_flow(const Potts_problem& problem, std::vector<std::size_t>& l, unsigned threads)
+inline void boost_compressed_sparse_row_max_flow(const Potts_problem& problem, std::vector<std::size_t>& l,
+                                                 unsigned threads, std::size_t sweeps)
 {
-  alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(problem, l, threads);
+  alpha_expansion<CGAL::Alpha_expansion_boost_compressed_sparse_row_impl>(problem, l, threads, sweeps);
 }
 
 // Registers both backends before main() in every program that includes

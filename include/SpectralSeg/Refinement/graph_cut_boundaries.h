@@ -87,6 +87,10 @@ struct Graph_cut_options
   /// may; the others keep their label, so the cut moves boundaries locally
   /// and no segment disappears
   double band_width = 0.;
+  /// the most sweeps of expansion moves (each label's move in turn, a
+  /// label's move again only when labels near it changed since); 0 (the
+  /// thesis): until a whole sweep lowers the energy no more
+  std::size_t sweeps = 0;
   /// max-flow implementation: MaxFlow when available (the fastest), else
   /// Boost on compressed sparse rows
 #ifdef SPECTRALSEG_USE_MAXFLOW
@@ -101,13 +105,16 @@ struct Graph_cut_options
   /// of the boundary, and in the half of the segment nearest its boundary,
   /// may change label). The smoothness term then matters: boundaries
   /// shorten and settle on concave creases, within reach of where the
-  /// clustering put them, and no segment can vanish.
+  /// clustering put them, and no segment can vanish. One sweep of moves:
+  /// the later ones lower the energy by a few thousandths at most and take
+  /// two fifths of the time (doc/benchmarks.md).
   static Graph_cut_options banded()
   {
     Graph_cut_options o;
     o.smoothness = 10.;
     o.normalize_by_mean_edge = true;
     o.band_width = 0.4;
+    o.sweeps = 1;
     return o;
   }
 };
@@ -117,7 +124,8 @@ namespace internal {
 
 // A Boost max-flow backend: runs the alpha expansion of `problem` from `l`
 // on the given number of threads.
-typedef void (*Boost_max_flow_backend)(const Potts_problem& problem, std::vector<std::size_t>& l, unsigned threads);
+typedef void (*Boost_max_flow_backend)(const Potts_problem& problem, std::vector<std::size_t>& l, unsigned threads,
+                                       std::size_t sweeps);
 
 // The Boost backends, registered by graph_cut_boost_backends.h when a
 // program includes it (null otherwise): [0] adjacency list, [1] compressed
@@ -297,7 +305,7 @@ SPECTRALSEG_INLINE Band_labels band_labels(const Dual_graph& graph, const std::v
 #endif
 
 SPECTRALSEG_INLINE void run_boost_max_flow_backend(Graph_cut_backend backend, const Potts_problem& problem,
-                                                   std::vector<std::size_t>& l, unsigned threads)
+                                                   std::vector<std::size_t>& l, unsigned threads, std::size_t sweeps)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Boost_max_flow_backend run =
@@ -305,7 +313,7 @@ SPECTRALSEG_INLINE void run_boost_max_flow_backend(Graph_cut_backend backend, co
   if(run == nullptr)
     throw Invalid_input("graph cut: the Boost max-flow backends need "
                         "#include <SpectralSeg/Refinement/graph_cut_boost_backends.h> in the program");
-  run(problem, l, threads);
+  run(problem, l, threads, sweeps);
 }
 #else
 ;
@@ -503,13 +511,13 @@ SPECTRALSEG_INLINE void solve_graph_cut(const Graph_cut_problem& cut, std::vecto
   if(options.backend == Graph_cut_backend::maxflow)
   {
 #ifdef SPECTRALSEG_USE_MAXFLOW
-    alpha_expansion<Maxflow_impl>(problem, l, threads);
+    alpha_expansion<Maxflow_impl>(problem, l, threads, options.sweeps);
 #else
     throw Invalid_input("graph cut: the MaxFlow backend needs SPECTRALSEG_USE_MAXFLOW (GPL code)");
 #endif
   }
   else
-    run_boost_max_flow_backend(options.backend, problem, l, threads);
+    run_boost_max_flow_backend(options.backend, problem, l, threads, options.sweeps);
   for(std::size_t v = 0; v < problem.vertices; ++v)
     labels[cut.face_of_variable[v]] = static_cast<int>(l[v]);
 }

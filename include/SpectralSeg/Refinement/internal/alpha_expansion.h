@@ -275,10 +275,12 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
 // only, so when the current move changes none of those, the next one's
 // answer is the one it would have computed after it, and it is kept;
 // otherwise it is computed again in its turn. The moves, their order and
-// the result are those of one thread, bit for bit. Deterministic. Returns
-// the final energy.
+// the result are those of one thread, bit for bit. Deterministic. With
+// `sweeps` > 0, at most that many sweeps run (0: until one changes
+// nothing). Returns the final energy.
 template <typename MaxFlow>
-double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsigned threads = 1)
+double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsigned threads = 1,
+                       std::size_t sweeps = 0)
 {
   double energy = p.energy(l);
   if(p.vertices == 0 || p.labels < 2)
@@ -333,7 +335,7 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsi
     return true;
   };
   bool improved = true;
-  while(improved)
+  for(std::size_t sweep = 0; improved && (sweeps == 0 || sweep < sweeps); ++sweep)
   {
     improved = false;
     for(std::size_t alpha = 0; alpha < p.labels;)
