@@ -9,6 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 S=${S:-../shared/data}
 B=${BUILD_DIR:-build}
+B=$(cd "$B" && pwd) # absolute: BUILD_DIR may be given either way
 SEG=$B/tools/spectralseg
 OUT=doc/images
 TMP=$(mktemp -d)
@@ -64,7 +65,7 @@ $B/examples/part_aware_sampling data/human_man.off 8 "$OUT/human_sampling.png"
 # the Blender add-on's picture, rendered by Blender (Cycles) after the add-on
 # segmented the mesh (doc/blender.md); skipped without Debian's blender
 if command -v blender > /dev/null; then
-  cmake -DBLENDER="$(command -v blender)" -DSPECTRALSEG="$SEG" -DMODULE_DIR="$PWD/$B/python" -DSOURCE="$PWD" \
+  cmake -DBLENDER="$(command -v blender)" -DSPECTRALSEG="$SEG" -DMODULE_DIR="$B/python" -DSOURCE="$PWD" \
     -DMESH="$PWD/data/human_man.off" -DWORK="$TMP/blender" -DRENDER="$PWD/$OUT/blender_human_auto.png" \
     -P test/blender/blender_addon.cmake > "$TMP/blender.log"
 else
