@@ -1134,6 +1134,19 @@ TEST_CASE("banded graph cut: a face only takes the label of a segment whose boun
     with_reach += reach.offset[f + 1] > reach.offset[f] ? 1 : 0;
   }
   CHECK(with_reach > 0);
+  for(std::size_t f = 0; f < start.size(); ++f) // each face's labels ascending
+    for(std::size_t i = reach.offset[f] + 1; i < reach.offset[f + 1]; ++i)
+      CHECK(reach.reachable[i - 1] < reach.reachable[i]);
+  // the segments' tasks on several threads: the same band and labels
+  for(const unsigned threads : {2u, 3u})
+  {
+    INFO(threads << " threads");
+    CHECK(Refinement::internal::boundary_band(s.graph, start, o.band_width, threads) == band);
+    const Refinement::internal::Band_labels other =
+      Refinement::internal::band_labels(s.graph, start, band, o.band_width, threads);
+    CHECK(other.offset == reach.offset);
+    CHECK(other.reachable == reach.reachable);
+  }
   std::vector<int> labels = start;
   Refinement::graph_cut_boundaries(s.graph, r.embedding.coordinates, r.clusters.centroids, labels, o);
   std::size_t changed = 0;

@@ -109,7 +109,7 @@ struct Pending_cut
 template <typename AffinityKernel>
 Pending_cut prepare_graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size_t clusters,
                                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r,
-                                     bool release)
+                                     bool release, unsigned threads)
 {
   Pending_cut p;
   if(options.boundary_enhancement && m > 1 && m <= clusters)
@@ -117,7 +117,7 @@ Pending_cut prepare_graph_cut_merged(const Weighted_dual_graph& graph, std::size
     p.run = true;
     p.problem = Refinement::internal::graph_cut_problem(graph.graph(), r.embedding.coordinates,
                                                         mean_proxies(r.embedding.coordinates, r.labels, m), r.labels,
-                                                        options.graph_cut);
+                                                        options.graph_cut, threads);
   }
   if(release)
     r.embedding.coordinates.resize(0, 0);
@@ -157,7 +157,7 @@ void graph_cut_merged(const Weighted_dual_graph& graph, std::size_t m, std::size
                       const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, const Execution& exec,
                       Stage_timer* lap = nullptr, bool release = false)
 {
-  Pending_cut p = prepare_graph_cut_merged(graph, m, clusters, options, r, release);
+  Pending_cut p = prepare_graph_cut_merged(graph, m, clusters, options, r, release, exec.threads());
   finish_graph_cut_merged(graph, options, r, p, exec, lap);
 }
 
@@ -198,7 +198,8 @@ std::size_t merge_weakest_segments(const Weighted_dual_graph& graph, std::size_t
 template <typename AffinityKernel>
 Pending_cut prepare_refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_t k_final,
                                     const Basic_K_way_options<AffinityKernel>& options, K_way_result& r,
-                                    Stage_timer& lap, Refinement::internal::Merge_history* keep, bool release)
+                                    Stage_timer& lap, Refinement::internal::Merge_history* keep, bool release,
+                                    unsigned threads)
 {
   const Eigen::MatrixXd& coordinates = r.embedding.coordinates;
   // Over-segmented: merge first, then cut the k merged segments with their
@@ -230,7 +231,8 @@ Pending_cut prepare_refine_clusters(const Weighted_dual_graph& graph, std::size_
   if(options.boundary_enhancement)
   {
     p.run = true;
-    p.problem = Refinement::internal::graph_cut_problem(graph.graph(), coordinates, proxies, r.labels, options.graph_cut);
+    p.problem =
+      Refinement::internal::graph_cut_problem(graph.graph(), coordinates, proxies, r.labels, options.graph_cut, threads);
   }
   if(release && p.merged)
     r.embedding.coordinates.resize(0, 0);
@@ -277,7 +279,7 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
                      const Basic_K_way_options<AffinityKernel>& options, K_way_result& r, Stage_timer& lap,
                      const Execution& exec, Refinement::internal::Merge_history* keep = nullptr, bool release = false)
 {
-  Pending_cut p = prepare_refine_clusters(graph, k, k_final, options, r, lap, keep, release);
+  Pending_cut p = prepare_refine_clusters(graph, k, k_final, options, r, lap, keep, release, exec.threads());
   finish_refine_clusters(graph, k_final, options, r, p, lap, exec, keep, release);
 }
 
@@ -479,11 +481,12 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
           graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale,
           internal::default_reference_faces, c, &histories[i]);
         t("merge");
-        cuts[i] = internal::prepare_graph_cut_merged(graph, m, specs[i].clusters, options, c, release);
+        cuts[i] = internal::prepare_graph_cut_merged(graph, m, specs[i].clusters, options, c, release, exec.threads());
         c.contrast_merge = true;
       }
       else
-        cuts[i] = internal::prepare_refine_clusters(graph, specs[i].clusters, k, options, c, t, &histories[i], release);
+        cuts[i] = internal::prepare_refine_clusters(graph, specs[i].clusters, k, options, c, t, &histories[i], release,
+                                                    exec.threads());
       if(cuts[i].run)
         t("graph cut");
       if(i + 1 == specs.size() || exec.threads() < 2)

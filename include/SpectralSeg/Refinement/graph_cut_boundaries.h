@@ -10,6 +10,7 @@
 #include <SpectralSeg/Metrics/Angular_weight.h>
 #include <SpectralSeg/Refinement/internal/alpha_expansion.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/parallel_for.h>
 
 // The max-flow implementations: Kolmogorov's MaxFlow (the default) here;
 // Boost's two, which are compiled only when asked for, in
@@ -184,42 +185,69 @@ void dijkstra_within_segments(const Dual_graph& graph, const std::vector<int>& l
   }
 }
 
+// The faces of each segment, in face order: the faces of label l are
+// face[first[l]] .. face[first[l + 1] - 1].
+struct Segment_faces
+{
+  std::vector<std::size_t> first;
+  std::vector<Dual_graph::size_type> face;
+
+  Segment_faces(const std::vector<int>& labels, std::size_t count) : first(count + 1, 0), face(labels.size())
+  {
+    for(int l : labels)
+      ++first[std::size_t(l) + 1];
+    for(std::size_t l = 0; l < count; ++l)
+      first[l + 1] += first[l];
+    std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for(std::size_t f = 0; f < labels.size(); ++f)
+      face[next[std::size_t(labels[f])]++] = Dual_graph::size_type(f);
+  }
+};
+
 // 1 for the faces within `width` times the square root of their segment's
 // area of the segment's boundary (geodesic distance between face centres
 // over the dual graph, from the faces on the boundary) and in the half of
-// the segment nearest it, 0 for the others.
+// the segment nearest it, 0 for the others. The segments are independent
+// (a face is only reached from its own segment): one task each, on
+// `threads` threads, with the same result.
 SPECTRALSEG_INLINE std::vector<char> boundary_band(const Dual_graph& graph, const std::vector<int>& labels,
-                                                   double width)
+                                                   double width, unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = graph.number_of_faces();
   const std::vector<double> area = segment_areas(graph, labels);
+  const Segment_faces segments(labels, area.size());
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
-  Distance_queue queue;
-  for(const Dual_graph::Edge& e : graph.edges())
-    if(labels[e.face[0]] != labels[e.face[1]])
-      for(const Dual_graph::size_type f : e.face)
-        if(distance[f] > 0.)
-        {
-          distance[f] = 0.;
-          queue.emplace(0., f);
-        }
   std::vector<char> out(n, 0);
-  std::vector<double> deepest(area.size(), 0.);
-  dijkstra_within_segments(
-    graph, labels, distance, queue, [](Dual_graph::size_type, double) { return true; },
-    [&](Dual_graph::size_type f, double d) {
-      deepest[std::size_t(labels[f])] = std::max(deepest[std::size_t(labels[f])], d);
-    });
-  // the half of each segment nearest its boundary at most: every segment
-  // keeps a core
-  for(std::size_t f = 0; f < n; ++f)
-  {
-    const std::size_t l = std::size_t(labels[f]);
-    // strictly nearer than half the deepest face: a segment whose faces all
-    // touch its boundary (a tiny mesh) stays as it is
-    out[f] = distance[f] <= width * std::sqrt(area[l]) && distance[f] < 0.5 * deepest[l] ? 1 : 0;
-  }
+  SpectralSeg::internal::parallel_range(0, area.size(), threads, [&](std::size_t l) {
+    Distance_queue queue;
+    for(std::size_t i = segments.first[l]; i < segments.first[l + 1]; ++i)
+    {
+      const Dual_graph::size_type f = segments.face[i];
+      bool boundary = false;
+      graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type) {
+        boundary = boundary || labels[g] != labels[f];
+      });
+      if(boundary)
+      {
+        distance[f] = 0.;
+        queue.emplace(0., f);
+      }
+    }
+    double deepest = 0.;
+    dijkstra_within_segments(
+      graph, labels, distance, queue, [](Dual_graph::size_type, double) { return true; },
+      [&](Dual_graph::size_type, double d) { deepest = std::max(deepest, d); });
+    // the half of each segment nearest its boundary at most: every segment
+    // keeps a core; strictly nearer than half the deepest face: a segment
+    // whose faces all touch its boundary (a tiny mesh) stays as it is
+    const double reach = width * std::sqrt(area[l]);
+    for(std::size_t i = segments.first[l]; i < segments.first[l + 1]; ++i)
+    {
+      const Dual_graph::size_type f = segments.face[i];
+      out[f] = distance[f] <= reach && distance[f] < 0.5 * deepest ? 1 : 0;
+    }
+  });
   return out;
 }
 #else
@@ -230,71 +258,83 @@ SPECTRALSEG_INLINE std::vector<char> boundary_band(const Dual_graph& graph, cons
 // segments whose boundary with the face's segment lies within `width` times
 // the square root of that segment's area (geodesic distance over the dual
 // graph, through band faces of the same segment). Compressed rows: the
-// labels of face f are reachable[offset[f]] .. reachable[offset[f + 1] - 1].
+// labels of face f are reachable[offset[f]] .. reachable[offset[f + 1] - 1],
+// ascending.
 struct Band_labels
 {
   std::vector<std::size_t> offset;
   std::vector<int> reachable;
 };
 
+// One task per segment on `threads` threads (a face is only reached from
+// its own segment), with the same result.
 SPECTRALSEG_INLINE Band_labels band_labels(const Dual_graph& graph, const std::vector<int>& labels,
-                                           const std::vector<char>& in_band, double width)
+                                           const std::vector<char>& in_band, double width, unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = graph.number_of_faces();
   const std::vector<double> area = segment_areas(graph, labels);
-  // the band faces on each label's boundary, as (label across, face)
-  std::vector<std::pair<int, Dual_graph::size_type>> sources;
-  for(const Dual_graph::Edge& e : graph.edges())
-    if(labels[e.face[0]] != labels[e.face[1]])
-      for(int side = 0; side < 2; ++side)
-        if(in_band[e.face[side]])
-          sources.emplace_back(labels[e.face[1 - side]], e.face[side]);
-  std::sort(sources.begin(), sources.end());
-  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
-
-  std::vector<std::pair<Dual_graph::size_type, int>> pairs; // (face, label it may take)
+  const Segment_faces segments(labels, area.size());
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
-  std::vector<Dual_graph::size_type> touched;
-  Distance_queue queue;
-  for(std::size_t begin = 0; begin < sources.size();)
-  {
-    const int across = sources[begin].first;
-    std::size_t end = begin;
-    for(; end < sources.size() && sources[end].first == across; ++end)
+  // (face, label it may take), per segment
+  std::vector<std::vector<std::pair<Dual_graph::size_type, int>>> pairs(area.size());
+  SpectralSeg::internal::parallel_range(0, area.size(), threads, [&](std::size_t l) {
+    // the segment's band faces on its boundary, as (label across, face)
+    std::vector<std::pair<int, Dual_graph::size_type>> sources;
+    for(std::size_t i = segments.first[l]; i < segments.first[l + 1]; ++i)
     {
-      distance[sources[end].second] = 0.;
-      touched.push_back(sources[end].second);
-      queue.emplace(0., sources[end].second);
+      const Dual_graph::size_type f = segments.face[i];
+      if(in_band[f])
+        graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type) {
+          if(labels[g] != labels[f])
+            sources.emplace_back(labels[g], f);
+        });
     }
-    dijkstra_within_segments(
-      graph, labels, distance, queue,
-      [&](Dual_graph::size_type g, double d) {
-        if(!in_band[g] || d > width * std::sqrt(area[std::size_t(labels[g])]))
-          return false;
-        if(distance[g] == std::numeric_limits<double>::infinity())
-          touched.push_back(g);
-        return true;
-      },
-      [&](Dual_graph::size_type f, double) { pairs.emplace_back(f, across); });
-    for(Dual_graph::size_type f : touched)
-      distance[f] = std::numeric_limits<double>::infinity();
-    touched.clear();
-    begin = end;
-  }
-  // The pairs come label after label, ascending, each face at most once per
-  // label: a stable counting sort by face puts them in (face, label) order,
-  // as sorting them would, in linear time (the sort took 1% of a 832,000
-  // face segmentation).
+    std::sort(sources.begin(), sources.end());
+    sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+    const double reach = width * std::sqrt(area[l]);
+    std::vector<Dual_graph::size_type> touched;
+    Distance_queue queue;
+    for(std::size_t begin = 0; begin < sources.size();)
+    {
+      const int across = sources[begin].first;
+      std::size_t end = begin;
+      for(; end < sources.size() && sources[end].first == across; ++end)
+      {
+        distance[sources[end].second] = 0.;
+        touched.push_back(sources[end].second);
+        queue.emplace(0., sources[end].second);
+      }
+      dijkstra_within_segments(
+        graph, labels, distance, queue,
+        [&](Dual_graph::size_type g, double d) {
+          if(!in_band[g] || d > reach)
+            return false;
+          if(distance[g] == std::numeric_limits<double>::infinity())
+            touched.push_back(g);
+          return true;
+        },
+        [&](Dual_graph::size_type f, double) { pairs[l].emplace_back(f, across); });
+      for(Dual_graph::size_type f : touched)
+        distance[f] = std::numeric_limits<double>::infinity();
+      touched.clear();
+      begin = end;
+    }
+  });
+  // Each face's pairs come from its segment's task, label after label,
+  // ascending: a stable counting sort by face puts them in (face, label)
+  // order in linear time (a sort took 1% of a 832,000-face segmentation).
   Band_labels out;
   out.offset.assign(n + 1, 0);
-  for(const auto& p : pairs)
-    ++out.offset[p.first + 1];
+  for(const auto& segment_pairs : pairs)
+    for(const auto& p : segment_pairs)
+      ++out.offset[p.first + 1];
   for(std::size_t f = 0; f < n; ++f)
     out.offset[f + 1] += out.offset[f];
-  out.reachable.resize(pairs.size());
-  for(const auto& p : pairs) // offset[f] walks to offset[f + 1] ...
-    out.reachable[out.offset[p.first]++] = p.second;
+  out.reachable.resize(out.offset[n]);
+  for(const auto& segment_pairs : pairs)
+    for(const auto& p : segment_pairs) // offset[f] walks to offset[f + 1] ...
+      out.reachable[out.offset[p.first]++] = p.second;
   for(std::size_t f = n; f > 0; --f) // ... and is moved back
     out.offset[f] = out.offset[f - 1];
   out.offset[0] = 0;
@@ -333,7 +373,7 @@ struct Graph_cut_problem
 // problem (none when there are fewer than two proxies or no variable).
 SPECTRALSEG_INLINE Graph_cut_problem graph_cut_problem(const Dual_graph& graph, const Eigen::MatrixXd& embedding,
                                                        const Eigen::MatrixXd& proxies, const std::vector<int>& labels,
-                                                       const Graph_cut_options& options)
+                                                       const Graph_cut_options& options, unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Graph_cut_problem out;
@@ -345,6 +385,9 @@ SPECTRALSEG_INLINE Graph_cut_problem graph_cut_problem(const Dual_graph& graph, 
     throw Invalid_input("graph cut: the band width must be finite and non-negative");
   if(k < 2)
     return out;
+  for(int l : labels) // before the band, which indexes its arrays by label
+    if(l < 0 || std::size_t(l) >= k)
+      throw Invalid_input("graph cut: a label is outside [0, number of proxies)");
 
   // Smoothness term per dual edge, and its sum around each face.
   const Metrics::Angular_weight angular(options.convex_weight);
@@ -377,8 +420,8 @@ SPECTRALSEG_INLINE Graph_cut_problem graph_cut_problem(const Dual_graph& graph, 
   Band_labels reach;
   if(options.band_width > 0.)
   {
-    in_band = boundary_band(graph, labels, options.band_width);
-    reach = band_labels(graph, labels, in_band, options.band_width);
+    in_band = boundary_band(graph, labels, options.band_width, threads);
+    reach = band_labels(graph, labels, in_band, options.band_width, threads);
   }
   const double unreachable = std::numeric_limits<double>::infinity();
 
@@ -414,8 +457,6 @@ SPECTRALSEG_INLINE Graph_cut_problem graph_cut_problem(const Dual_graph& graph, 
   problem.cost.reserve(band_terms);
   for(std::size_t f = 0; f < n; ++f)
   {
-    if(labels[f] < 0 || std::size_t(labels[f]) >= k)
-      throw Invalid_input("graph cut: a label is outside [0, number of proxies)");
     if(!in_band[f])
       continue;
     // the face's row read once (the embedding is stored column after column)
@@ -542,8 +583,8 @@ SPECTRALSEG_INLINE void solve_graph_cut(const Graph_cut_problem& cut, std::vecto
 /// along concave creases are cheap.
 ///
 /// Expansion moves for every label are repeated until a whole sweep lowers
-/// the energy no more; a move is kept only when the energy of its labelling,
-/// evaluated exactly, is lower. Faces whose data term alone decides their
+/// the energy no more, or for `Graph_cut_options::sweeps` sweeps; a move is
+/// kept only when the energy of its labelling, evaluated exactly, is lower. Faces whose data term alone decides their
 /// label (`Graph_cut_options::fix_decided_faces`) are left out of the
 /// max-flow problems, which then only hold the faces near the boundaries.
 /// With `Graph_cut_options::band_width` positive, only the faces in a band
