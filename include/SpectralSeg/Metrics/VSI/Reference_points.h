@@ -15,8 +15,6 @@
 
 #include <CGAL/number_type_config.h>
 
-#include <boost/range/iterator_range.hpp>
-
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -213,53 +211,36 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
   if(options.smoothing_iterations == 0 || n < 2)
     return out;
 
-  // Neighbourhood graph: mesh neighbours plus Euclidean neighbours of the
-  // points, in compressed rows (face f's are neighbour[first[f]] ..
-  // neighbour[first[f] + count[f] - 1], ascending): one array rather than a
-  // small vector per face, which many threads would allocate from one heap.
-  const std::size_t euclidean = options.euclidean_neighbours + 1;
-  std::vector<std::size_t> first(n + 1, 0);
-  for(std::size_t f = 0; f < n; ++f)
-  {
-    std::size_t degree = 0;
-    graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f),
-                             [&](Dual_graph::size_type, Dual_graph::size_type) { ++degree; });
-    first[f + 1] = first[f] + degree + euclidean;
-  }
-  std::vector<std::uint32_t> neighbour(first[n]);
-  std::vector<std::uint32_t> count(n, 0);
+  // Neighbourhood graph: mesh neighbours plus Euclidean neighbours of the points.
+  std::vector<std::vector<std::uint32_t>> neighbours(n);
   {
     const internal::Point_neighbours knn(out.points);
     internal::parallel_for(n, exec, "reference point neighbours", [&](std::size_t f) {
-      std::uint32_t* nb = neighbour.data() + first[f];
-      std::size_t m = 0;
+      std::vector<std::uint32_t>& nb = neighbours[f];
       graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f),
-                               [&](Dual_graph::size_type g, Dual_graph::size_type) { nb[m++] = std::uint32_t(g); });
-      for(const auto& q : knn.nearest(out.points[f], euclidean))
+                               [&](Dual_graph::size_type g, Dual_graph::size_type) { nb.push_back(g); });
+      for(const auto& q : knn.nearest(out.points[f], options.euclidean_neighbours + 1))
         if(q.first != f)
-          nb[m++] = static_cast<std::uint32_t>(q.first);
-      std::sort(nb, nb + m);
-      count[f] = std::uint32_t(std::unique(nb, nb + m) - nb);
+          nb.push_back(static_cast<std::uint32_t>(q.first));
+      std::sort(nb.begin(), nb.end());
+      nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
     });
   }
-  const auto neighbours = [&](std::size_t f) {
-    return boost::make_iterator_range(neighbour.data() + first[f], neighbour.data() + first[f] + count[f]);
-  };
 
   const std::vector<Eigen::Vector3d> start = out.points;
   std::vector<Eigen::Vector3d> next(n);
   for(std::size_t it = 0; it < options.smoothing_iterations; ++it)
   {
     internal::parallel_range(0, n, exec.threads(), [&](std::size_t f) {
-      if(count[f] == 0)
+      if(neighbours[f].empty())
       {
         next[f] = out.points[f];
         return;
       }
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for(std::uint32_t g : neighbours(f))
+      for(std::uint32_t g : neighbours[f])
         mean += out.points[g];
-      mean /= double(count[f]);
+      mean /= double(neighbours[f].size());
       next[f] = (1. - options.smoothing_step) * out.points[f] + options.smoothing_step * mean;
     });
     out.points.swap(next);
@@ -283,7 +264,7 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
     ++out.relocated;
     double best = std::numeric_limits<double>::infinity();
     fixed[f] = start[f]; // fallback: the unsmoothed point, inside by construction
-    for(std::uint32_t g : neighbours(f))
+    for(std::uint32_t g : neighbours[f])
     {
       const double d2 = (out.points[g] - out.points[f]).squaredNorm();
       if(inside[g] && d2 < best)
