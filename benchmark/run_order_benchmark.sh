@@ -17,6 +17,7 @@
 #          [--cgal-levels 0,1,2] [--threads 2] [--out doc/armadillo_speed_table.md]
 #          [--mesh ../shared/data/meshes/armadillo.off] [--work DIR]
 # Needs build/tools/spectralseg and build/benchmark/bench_segmentation_speed
+# (or those of BUILD_DIR)
 # (built first if missing), python3 with numpy. Takes about 25 minutes on 2
 # cores with the defaults (CGAL alone about 10 of them). Run it on a quiet
 # machine: another process on the same cores changes the figures by 50%.
@@ -42,10 +43,11 @@ while [ $# -gt 0 ]; do
     *) echo "unknown option $1" >&2; exit 1 ;;
   esac
 done
-TOOL=$ROOT/build/tools/spectralseg
-BENCH=$ROOT/build/benchmark/bench_segmentation_speed
+BUILD=${BUILD_DIR:-$ROOT/build} # another build folder: BUILD_DIR=...
+TOOL=$BUILD/tools/spectralseg
+BENCH=$BUILD/benchmark/bench_segmentation_speed
 for t in spectralseg bench_segmentation_speed; do
-  cmake --build "$ROOT/build" --target $t >/dev/null
+  cmake --build "$BUILD" --target $t >/dev/null
 done
 mkdir -p "$WORK"
 /usr/bin/python3 "$ROOT/benchmark/make_order_meshes.py" "$MESH" "$WORK" --levels "$LEVELS"

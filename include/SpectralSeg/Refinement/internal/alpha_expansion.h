@@ -113,21 +113,6 @@ struct Potts_adjacency
   }
 };
 
-// The best alpha-expansion of `l` (Boykov, Veksler and Zabih 2001), with the
-// graph construction of CGAL's alpha_expansion_graphcut(); `MaxFlow` is one
-// of CGAL's Alpha_expansion_*_impl classes. A new max-flow object is built
-// for every move (CGAL 5.5's MaxFlow graph keeps the previous flow after
-// clear_graph(), which stops its driver after the first move).
-//
-// Only the candidates of the move are variables of its max-flow problem: a
-// vertex for which alpha costs more than its current label plus all its
-// edge weights cannot take alpha in an optimal move (keeping its label
-// would be cheaper whatever its neighbours do), so it keeps its label and
-// enters its neighbours' terms as a constant; so does a vertex for which
-// alpha is out of reach (infinite cost). The work of a move is therefore
-// proportional to its candidates and their edges, not to the problem.
-// Returns the vertices that took alpha (`l` unchanged) and, in `delta`,
-// the change of energy if they do.
 // Whether a max-flow class can serve move after move: it has reserve(),
 // which empties its graph and makes room for the next one's vertices and
 // edges. The others are made again for every move.
@@ -139,6 +124,24 @@ struct Reusable_max_flow<MaxFlow, std::void_t<decltype(std::declval<MaxFlow&>().
   : std::true_type
 {};
 
+// The best alpha-expansion of `l` (Boykov, Veksler and Zabih 2001), with the
+// graph construction of CGAL's alpha_expansion_graphcut(); `MaxFlow` is one
+// of CGAL's Alpha_expansion_*_impl classes or Maxflow_impl (maxflow.h). A
+// max-flow object without reserve() is built anew for every move (CGAL 5.5's
+// MaxFlow graph keeps the previous flow after clear_graph(), which stops its
+// driver after the first move).
+//
+// Only the candidates of the move are variables of its max-flow problem: a
+// vertex for which alpha costs more than its current label plus all its
+// edge weights cannot take alpha in an optimal move (keeping its label
+// would be cheaper whatever its neighbours do), so it keeps its label and
+// enters its neighbours' terms as a constant; so does a vertex for which
+// alpha is out of reach (infinite cost). The work of a move is therefore
+// proportional to its candidates and their edges, not to the problem.
+// Returns the vertices that took alpha (`l` unchanged) and, in `delta`,
+// the change of energy if they do. `flow_object` is the calling thread's
+// max-flow object: kept from move to move when Reusable_max_flow, else made
+// anew.
 template <typename MaxFlow>
 std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adjacency& adjacency,
                                         const std::vector<std::size_t>& l, std::size_t alpha,
