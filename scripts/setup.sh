@@ -10,7 +10,7 @@ set -euo pipefail
 # the tool alone (the demo): a compiler rather than build-essential (no
 # dpkg-dev and its Perl), and Boost's headers through libcgal-dev (the
 # Boost Graph Library is headers only here: libboost-graph-dev would add
-# ICU, regex, serialization and test) -- 195 packages, 148 MB
+# ICU, regex, serialization and test) -- 197 packages, 148 MB (libmaxflow-dev: 2 packages, 0.1 MB)
 TOOL_PACKAGES=(
   g++ make cmake ninja-build
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libmaxflow-dev
