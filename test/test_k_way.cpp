@@ -518,6 +518,12 @@ TEST_CASE("graph_cut_boundaries moves labels to the nearest proxy along a strip"
   CHECK_THROWS_AS(Refinement::graph_cut_boundaries(graph, embedding, proxies, bad), Invalid_input);
   std::vector<int> out_of_range(n, 2);
   CHECK_THROWS_AS(Refinement::graph_cut_boundaries(graph, embedding, proxies, out_of_range), Invalid_input);
+  // the banded cut too, before its band reads arrays by label
+  const Refinement::Graph_cut_options banded = Refinement::Graph_cut_options::banded();
+  std::vector<int> negative = start;
+  negative[n / 2] = -1;
+  CHECK_THROWS_AS(Refinement::graph_cut_boundaries(graph, embedding, proxies, negative, banded), Invalid_input);
+  CHECK_THROWS_AS(Refinement::graph_cut_boundaries(graph, embedding, proxies, out_of_range, banded), Invalid_input);
 }
 
 TEST_CASE("graph_cut_boundaries: the decided faces left out, the same labels on a real mesh", "[graphcut]")
