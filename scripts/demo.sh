@@ -18,7 +18,7 @@ cmake --build "$BUILD_DIR" --target spectralseg -j "$(nproc)"
 OUT=${OUT:-output}
 mkdir -p "$OUT"
 MESH=data/human_man.off
-SEG=./$BUILD_DIR/tools/spectralseg
+SEG=$(cd "$BUILD_DIR" && pwd)/tools/spectralseg # BUILD_DIR relative or absolute
 $SEG info "$MESH"
 # The main job: k-way segmentation with the part-aware metric
 # (head, torso, arms, legs; the ears come out as parts of their own).
