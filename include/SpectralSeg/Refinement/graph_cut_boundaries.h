@@ -584,9 +584,10 @@ SPECTRALSEG_INLINE void solve_graph_cut(const Graph_cut_problem& cut, std::vecto
 ///
 /// Expansion moves for every label are repeated until a whole sweep lowers
 /// the energy no more, or for `Graph_cut_options::sweeps` sweeps; a move is
-/// kept only when the energy of its labelling, evaluated exactly, is lower. Faces whose data term alone decides their
-/// label (`Graph_cut_options::fix_decided_faces`) are left out of the
-/// max-flow problems, which then only hold the faces near the boundaries.
+/// kept only when the energy of its labelling, evaluated exactly, is lower.
+/// Faces whose data term alone decides their label
+/// (`Graph_cut_options::fix_decided_faces`) are left out of the max-flow
+/// problems, which then only hold the faces near the boundaries.
 /// With `Graph_cut_options::band_width` positive, only the faces in a band
 /// along the boundaries may change label (our addition, the default of
 /// `segment_k_way()` through `Graph_cut_options::banded()`).
