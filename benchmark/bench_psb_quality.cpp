@@ -26,7 +26,9 @@
 //                           sequence=distance|harmonic, sequence-scale=S (the harmonic sequence's angle scale),
 //                           chain=R (chain eigenvalue ratio), continuation=X (L threshold below a passed piece),
 //                           contrast=C (a cut's boundary at least C times as concave as its piece; 0: off),
-//                           holes=0|1 (the projection's holes count on pieces with a handle)
+//                           holes=0|1 (the projection's holes count on pieces with a handle),
+//                           loop-disc=R (below the roots, no test of a piece with less area than R times the
+//                           flat disc its longest cut loop bounds; 0: off)
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --labels-dir DIR        each result's labels, METHOD_ID.seg, one per face of the .off file
@@ -427,6 +429,8 @@ std::vector<int> run_salient(const Options& o, const SpectralSeg::Dual_graph& g)
       so.min_cut_contrast = std::stod(value);
     else if(key == "roots")
       so.min_cut_salience_at_roots = value == "1";
+    else if(key == "loop-disc")
+      so.min_area_over_loop_disc = std::stod(value);
     else if(key == "holes")
       so.segmentability.contour.count_holes = value == "1";
     else

@@ -741,6 +741,50 @@ TEST_CASE("the genus of a piece counts its handles", "[automatic]")
   CHECK(strip.piece().genus() == 0);
 }
 
+TEST_CASE("the longest cut loop: a cap has more area than the disc it bounds, a lune less", "[automatic]")
+{
+  const double r = 1.;
+  const Shape s(test_meshes::sphere(r, 24, 48));
+  CHECK(s.piece().longest_cut_loop() == 0.); // a whole component: no cut
+  const auto disc = [](double loop) { return loop * loop / (4. * test_meshes::pi); };
+  // a polar cap, its rim the 7th ring of 24 (52.5 degrees from the pole):
+  // its loop is that ring, 48 chords
+  std::vector<Mesh_piece::size_type> cap, lune, two_caps;
+  const Mesh_geometry& g = s.graph.geometry();
+  for(Mesh_piece::size_type f = 0; f < g.number_of_faces(); ++f)
+  {
+    const Eigen::Vector3d& c = g.centroids[f];
+    double low = 1., high = -1.; // the face's lowest and highest vertex
+    for(auto v : g.triangles[f])
+    {
+      low = std::min(low, g.points[v].z());
+      high = std::max(high, g.points[v].z());
+    }
+    if(low > 0.6) // ring 7 is at z = 0.609, ring 8 at 0.5
+      cap.push_back(f);
+    if(low > 0.6 || high < -0.6)
+      two_caps.push_back(f);
+    const double phi = std::atan2(c.y(), c.x());
+    if(phi > 0. && phi < 2. * test_meshes::pi / 12.)
+      lune.push_back(f);
+  }
+  const Mesh_piece cap_piece(s.graph, cap), lune_piece(s.graph, lune), caps_piece(s.graph, two_caps);
+  const double ring = 2. * test_meshes::pi * std::sin(7. * test_meshes::pi / 24.);
+  CHECK(cap_piece.longest_cut_loop() == Approx(ring).epsilon(0.01));
+  CHECK(cap_piece.area() > disc(cap_piece.longest_cut_loop()));
+  // two caps: two loops of the same length, the longest counts once
+  CHECK(caps_piece.longest_cut_loop() == Approx(cap_piece.longest_cut_loop()));
+  // a lune between two meridians 30 degrees apart: its loop runs from pole
+  // to pole and back, two half circles, around a twelfth of the sphere
+  CHECK(lune_piece.longest_cut_loop() == Approx(2. * test_meshes::pi * r).epsilon(0.01));
+  CHECK(lune_piece.area() < disc(lune_piece.longest_cut_loop()));
+  // the option is checked
+  Automatic_segmentation_options<> o;
+  o.min_area_over_loop_disc = -1.;
+  CHECK_THROWS_AS(segment_automatically(s.graph, sequence_weights(s.graph), o), Invalid_input);
+  CHECK(Automatic_segmentation_options<>::thesis().min_area_over_loop_disc == 0.);
+}
+
 TEST_CASE("holes of a projection: an annulus is less convex than the disc around it", "[automatic]")
 {
   // a flat annulus, radii 1 and 0.5, and the disc of radius 1

@@ -267,6 +267,54 @@ public:
     return twice_genus > 0 ? std::size_t(twice_genus / 2) : 0;
   }
 
+  /// the length of the piece's longest cut loop: the mesh edges it shares
+  /// with faces outside it (where cuts separated it from the rest of its
+  /// component; the mesh's own border and contacts between parts do not
+  /// count), joined into loops by shared vertices. 0 for a whole
+  /// component. A piece that sticks out of the surface it was cut from has
+  /// more area than the flat disc its cut loop bounds (any surface spanning
+  /// a planar circle does); a patch cut out of a surface by a ragged or
+  /// elongated loop has less.
+  double longest_cut_loop() const
+  {
+    if(!graph_)
+      return 0.;
+    std::vector<size_type> sorted_faces(faces_), sorted_vertices(vertices_);
+    std::sort(sorted_faces.begin(), sorted_faces.end());
+    std::sort(sorted_vertices.begin(), sorted_vertices.end());
+    const auto rank = [](const std::vector<size_type>& v, size_type x) {
+      return static_cast<size_type>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
+    };
+    std::vector<size_type> root(sorted_vertices.size());
+    for(size_type i = 0; i < root.size(); ++i)
+      root[i] = i;
+    const auto find = [&root](size_type x) {
+      while(root[x] != x)
+        x = root[x] = root[root[x]];
+      return x;
+    };
+    std::vector<std::pair<size_type, double>> cut; // (a vertex, length) per cut edge
+    for(size_type f : faces_)
+      graph_->for_each_neighbour(f, [&](Dual_graph::size_type nb, Dual_graph::size_type e) {
+        const Dual_graph::Edge& de = graph_->edge(e);
+        if(de.contact || std::binary_search(sorted_faces.begin(), sorted_faces.end(), size_type(nb)))
+          return;
+        const size_type a = find(rank(sorted_vertices, de.vertex[0])), b = find(rank(sorted_vertices, de.vertex[1]));
+        if(a != b)
+          root[std::max(a, b)] = std::min(a, b);
+        cut.emplace_back(a, de.length);
+      });
+    std::vector<double> loop(root.size(), 0.);
+    double longest = 0.;
+    for(const auto& c : cut)
+    {
+      double& l = loop[find(c.first)];
+      l += c.second;
+      longest = std::max(longest, l);
+    }
+    return longest;
+  }
+
 private:
   const Dual_graph* graph_ = nullptr;
   std::vector<size_type> faces_;

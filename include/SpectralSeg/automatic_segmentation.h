@@ -24,6 +24,8 @@
 #include <SpectralSeg/segment_hybrid.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
+#include <boost/math/constants/constants.hpp>
+
 #include <future>
 #include <limits>
 #include <memory>
@@ -56,7 +58,10 @@ namespace SpectralSeg {
 /// sliced; on a piece with a handle (`Mesh_piece::genus()`), the holes of
 /// its projection count in its convexity (`Segmentability::Contour_options::
 /// count_holes`), so that a vase's handles are cut off; no part under 2% of
-/// its component; at most 64 parts.
+/// its component; below the roots, no test of a patch with less area than
+/// the flat disc its longest cut loop bounds (`min_area_over_loop_disc`), so
+/// that a surface creased everywhere (curls of hair) is not diced along the
+/// outlines of earlier cuts; at most 64 parts.
 /// \tparam SalienceModel a model of `Salience`
 template <typename SalienceModel = Salience::Thesis_salience>
 struct Automatic_segmentation_options
@@ -120,6 +125,17 @@ struct Automatic_segmentation_options
   /// part boundary either. 4, the contrast merge's limit
   /// (`Hybrid_options::min_boundary_contrast`)
   double min_cut_contrast = 4.;
+  /// below the roots, a piece whose area is less than this multiple of the
+  /// area of the flat disc bounded by its longest cut loop,
+  /// \f$L^2 / 4\pi\f$ with \f$L\f$ = `Mesh_piece::longest_cut_loop()`, is a
+  /// final part, not tested (our addition; 0: every piece is tested, the
+  /// thesis). A part that sticks out (a limb, a handle, a head) has more
+  /// area than that disc, as any surface spanning a planar circle has; a
+  /// patch that earlier cuts carved out of a surface (a strip of hair
+  /// between two cuts) has less. Such a patch's L projection is its own
+  /// flattening, so its contour is the outline the cuts drew, and its
+  /// concavities are theirs, not the shape's. 1, the disc itself
+  double min_area_over_loop_disc = 1.;
   /// how many pairs of sample faces are tried on each piece, the most
   /// salient of their cuts kept (`Segmentability::bending_sample_face_pairs()`:
   /// one pair per protrusion the contour shows; 1: the thesis's single
@@ -173,6 +189,7 @@ struct Automatic_segmentation_options
     o.cut_unsegmentable_roots = false;
     o.continuation_threshold = 0.;
     o.min_cut_contrast = 0.;
+    o.min_area_over_loop_disc = 0.;
     o.sample_pairs = 1;
     o.sequence = Sequence::distance_difference;
     return o;
@@ -262,6 +279,8 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
     throw Invalid_input("automatic segmentation: the sequence angle scale must be a positive number");
   if(!(options.min_cut_contrast >= 0.) || !std::isfinite(options.min_cut_contrast))
     throw Invalid_input("automatic segmentation: the minimum cut contrast must be finite and non-negative");
+  if(!(options.min_area_over_loop_disc >= 0.) || !std::isfinite(options.min_area_over_loop_disc))
+    throw Invalid_input("automatic segmentation: the minimum area over the loop's disc must be finite and non-negative");
   Automatic_segmentation_result r;
   internal::Stage_timer lap(r.timings, true);
   const std::size_t n = graph.number_of_faces();
@@ -363,6 +382,16 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
       continue;
     }
     const Mesh_piece piece(graph, h.nodes[i].faces);
+    if(options.min_area_over_loop_disc > 0. && h.nodes[i].parent != Part_node::none)
+    {
+      const double loop = piece.longest_cut_loop();
+      if(piece.area() < options.min_area_over_loop_disc * loop * loop / (4. * boost::math::constants::pi<double>()))
+      {
+        lap("pieces");
+        settle();
+        continue;
+      }
+    }
     lap("pieces");
     // the harmonic sequence's system does not depend on the samples: made
     // on a second thread while the piece is tested (the same system either way)
