@@ -90,7 +90,12 @@ public:
       graph.for_each_neighbour(faces_[i], [&](Dual_graph::size_type nb, Dual_graph::size_type e) {
         const size_type j = local_face[nb];
         if(j == none)
+        {
+          const Dual_graph::Edge& de = graph.edge(e);
+          if(!de.contact) // a cut edge: kept for longest_cut_loop()
+            cut_edges_.push_back(Edge{{i, i}, {local_vertex[de.vertex[0]], local_vertex[de.vertex[1]]}, e});
           return;
+        }
         ++offsets_[i + 1];
         if(i < j)
         {
@@ -277,15 +282,7 @@ public:
   /// elongated loop has less.
   double longest_cut_loop() const
   {
-    if(!graph_)
-      return 0.;
-    std::vector<size_type> sorted_faces(faces_), sorted_vertices(vertices_);
-    std::sort(sorted_faces.begin(), sorted_faces.end());
-    std::sort(sorted_vertices.begin(), sorted_vertices.end());
-    const auto rank = [](const std::vector<size_type>& v, size_type x) {
-      return static_cast<size_type>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
-    };
-    std::vector<size_type> root(sorted_vertices.size());
+    std::vector<size_type> root(vertices_.size());
     for(size_type i = 0; i < root.size(); ++i)
       root[i] = i;
     const auto find = [&root](size_type x) {
@@ -293,23 +290,18 @@ public:
         x = root[x] = root[root[x]];
       return x;
     };
-    std::vector<std::pair<size_type, double>> cut; // (a vertex, length) per cut edge
-    for(size_type f : faces_)
-      graph_->for_each_neighbour(f, [&](Dual_graph::size_type nb, Dual_graph::size_type e) {
-        const Dual_graph::Edge& de = graph_->edge(e);
-        if(de.contact || std::binary_search(sorted_faces.begin(), sorted_faces.end(), size_type(nb)))
-          return;
-        const size_type a = find(rank(sorted_vertices, de.vertex[0])), b = find(rank(sorted_vertices, de.vertex[1]));
-        if(a != b)
-          root[std::max(a, b)] = std::min(a, b);
-        cut.emplace_back(a, de.length);
-      });
+    for(const Edge& c : cut_edges_)
+    {
+      const size_type a = find(c.vertex[0]), b = find(c.vertex[1]);
+      if(a != b)
+        root[std::max(a, b)] = std::min(a, b);
+    }
     std::vector<double> loop(root.size(), 0.);
     double longest = 0.;
-    for(const auto& c : cut)
+    for(const Edge& c : cut_edges_)
     {
-      double& l = loop[find(c.first)];
-      l += c.second;
+      double& l = loop[find(c.vertex[0])];
+      l += graph_->edge(c.dual_edge).length;
       longest = std::max(longest, l);
     }
     return longest;
@@ -321,6 +313,7 @@ private:
   std::vector<size_type> vertices_;
   std::vector<std::array<size_type, 3>> triangles_;
   std::vector<Edge> edges_;
+  std::vector<Edge> cut_edges_; // to faces outside the piece (face[1] unused)
   std::vector<size_type> offsets_;
   std::vector<Neighbour> adjacency_;
   double area_ = 0.;
