@@ -222,24 +222,7 @@ public:
         sides.push_back({{a, b}, f});
       }
     std::sort(sides.begin(), sides.end());
-    std::vector<size_type> face_root(triangles_.size()), vertex_root(vertices_.size());
-    for(size_type i = 0; i < face_root.size(); ++i)
-      face_root[i] = i;
-    for(size_type i = 0; i < vertex_root.size(); ++i)
-      vertex_root[i] = i;
-    const auto find = [](std::vector<size_type>& root, size_type x) {
-      while(root[x] != x)
-        x = root[x] = root[root[x]];
-      return x;
-    };
-    const auto join = [&find](std::vector<size_type>& root, size_type a, size_type b) {
-      a = find(root, a);
-      b = find(root, b);
-      if(a == b)
-        return false;
-      root[std::max(a, b)] = std::min(a, b);
-      return true;
-    };
+    std::vector<size_type> face_root = singletons(triangles_.size()), vertex_root = singletons(vertices_.size());
     long long edges = 0, components = static_cast<long long>(triangles_.size()), border_loops = 0;
     std::vector<unsigned char> on_border(vertices_.size(), 0);
     for(std::size_t i = 0; i < sides.size();)
@@ -282,25 +265,14 @@ public:
   /// elongated loop has less.
   double longest_cut_loop() const
   {
-    std::vector<size_type> root(vertices_.size());
-    for(size_type i = 0; i < root.size(); ++i)
-      root[i] = i;
-    const auto find = [&root](size_type x) {
-      while(root[x] != x)
-        x = root[x] = root[root[x]];
-      return x;
-    };
+    std::vector<size_type> root = singletons(vertices_.size());
     for(const Edge& c : cut_edges_)
-    {
-      const size_type a = find(c.vertex[0]), b = find(c.vertex[1]);
-      if(a != b)
-        root[std::max(a, b)] = std::min(a, b);
-    }
+      join(root, c.vertex[0], c.vertex[1]);
     std::vector<double> loop(root.size(), 0.);
     double longest = 0.;
     for(const Edge& c : cut_edges_)
     {
-      double& l = loop[find(c.vertex[0])];
+      double& l = loop[find(root, c.vertex[0])];
       l += graph_->edge(c.dual_edge).length;
       longest = std::max(longest, l);
     }
@@ -308,6 +280,30 @@ public:
   }
 
 private:
+  // union-find over local indices (genus(), longest_cut_loop())
+  static std::vector<size_type> singletons(std::size_t n)
+  {
+    std::vector<size_type> root(n);
+    for(size_type i = 0; i < root.size(); ++i)
+      root[i] = i;
+    return root;
+  }
+  static size_type find(std::vector<size_type>& root, size_type x)
+  {
+    while(root[x] != x)
+      x = root[x] = root[root[x]];
+    return x;
+  }
+  static bool join(std::vector<size_type>& root, size_type a, size_type b)
+  {
+    a = find(root, a);
+    b = find(root, b);
+    if(a == b)
+      return false;
+    root[std::max(a, b)] = std::min(a, b);
+    return true;
+  }
+
   const Dual_graph* graph_ = nullptr;
   std::vector<size_type> faces_;
   std::vector<size_type> vertices_;
