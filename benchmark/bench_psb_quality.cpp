@@ -59,6 +59,8 @@
 //   --merge-separation S     the scale of the merge's embedding-separation factor (default 2; 0: off)
 //   --merge-min-area-fraction F  segments under this fraction of the area are merged first (default 0.005)
 //   --neck-scale S  the contrast merge's neck-ratio scale (default 0.4; 0: no neck factor)
+//   --reference-faces N  the contrast merge's reference resolution (Hybrid_options::reference_faces;
+//                   default 50000; 0: the mesh's own); --k auto only, not k-way's contrast candidate
 //   --max-min-seeds
 // Merge shards with: bench_psb_quality --merge a.tsv b.tsv ...
 #include <SpectralSeg/Dual_graph.h>
@@ -152,6 +154,7 @@ struct Options
   double merge_separation = -1;    // < 0: the default
   double merge_min_area_fraction = -1; // < 0: the default
   double neck_scale = -1;          // contrast merge: < 0: the default
+  long reference_faces = -1;       // contrast merge: < 0: the default
   bool max_min_seeds = false; // K-means seeded by max-min in the embedding instead of the samples
 };
 
@@ -358,6 +361,8 @@ std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g
     ho.min_boundary_contrast = o.auto_contrast;
   if(o.neck_scale >= 0.)
     ho.neck_scale = o.neck_scale;
+  if(o.reference_faces >= 0)
+    ho.reference_faces = std::size_t(o.reference_faces);
   if(o.crease_angle >= 0.)
     ho.k_way.crease_angle = o.crease_angle;
   if(o.over_segmentations > 0)
@@ -581,6 +586,8 @@ int run(int argc, char** argv)
       o.merge_separation = std::stod(next());
     else if(a == "--neck-scale")
       o.neck_scale = std::stod(next());
+    else if(a == "--reference-faces")
+      o.reference_faces = std::stol(next());
     else if(a == "--merge-min-area-fraction")
       o.merge_min_area_fraction = std::stod(next());
     else if(a == "--thesis")
