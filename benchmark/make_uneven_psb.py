@@ -2,7 +2,8 @@
 # Copyright (c) 2026 SpectralSeg developers.
 # SPDX-License-Identifier: GPL-3.0-or-later
 """A copy of a Princeton Segmentation Benchmark folder whose meshes are
-tessellated unevenly (doc/benchmarks.md, "Uneven tessellation"): on each
+tessellated otherwise (doc/benchmarks.md, "The same shapes with other
+triangles"): on each
 model, the faces whose centroid lies on the lower half of the longest axis
 of the bounding box (below the median centroid) are split at their centroid
 into three, L times (3^L faces each); the other half is unchanged. The

@@ -23,7 +23,7 @@ from psb_human_scores import load, rand_index_error
 
 def main():
     if len(sys.argv) != 4:
-        sys.exit(__doc__.split("\n\n")[-2])
+        sys.exit("usage: score_on_input_faces.py PSB_DIR LABELS_DIR METHOD")
     psb, labels_dir, method = sys.argv[1:]
     with open(os.path.join(psb, "index.tsv")) as f:
         rows = [line.rstrip("\n").split("\t") for line in f if line.strip()][1:]
