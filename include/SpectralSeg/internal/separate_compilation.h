@@ -15,7 +15,15 @@
 // src/spectralseg_compiled.cpp (CMake target SpectralSeg::Compiled), which
 // defines SPECTRALSEG_COMPILING_LIBRARY as well. Results are the same either
 // way; a program made of many translation units compiles much less.
-#if defined(SPECTRALSEG_SEPARATE_COMPILATION)
+//
+// SPECTRALSEG_HEADER_CHECK_OWN_BODIES (the header self-containment test
+// only, GCC and Clang): the bodies of the header the translation unit
+// includes, and only declarations from the headers that one includes, whose
+// bodies are checked in their own units.
+#if defined(SPECTRALSEG_HEADER_CHECK_OWN_BODIES) && defined(__INCLUDE_LEVEL__)
+#  define SPECTRALSEG_INLINE
+#  define SPECTRALSEG_DEFINE_FUNCTIONS (__INCLUDE_LEVEL__ == 1)
+#elif defined(SPECTRALSEG_SEPARATE_COMPILATION)
 #  define SPECTRALSEG_INLINE
 #  if defined(SPECTRALSEG_COMPILING_LIBRARY)
 #    define SPECTRALSEG_DEFINE_FUNCTIONS 1
