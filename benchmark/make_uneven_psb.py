@@ -3,10 +3,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """A copy of a Princeton Segmentation Benchmark folder whose meshes are
 tessellated otherwise (doc/benchmarks.md, "The same shapes with other
-triangles"): on each
-model, the faces whose centroid lies on the lower half of the longest axis
-of the bounding box (below the median centroid) are split at their centroid
-into three, L times (3^L faces each); the other half is unchanged. The
+triangles"): on each model, the faces whose centroid lies on the lower
+half of the longest axis of the bounding box (below the median centroid)
+are split at their centroid into three, L times (3^L faces each); the
+other half is unchanged. The
 shape is the same, only its triangles differ: a segmentation that depends
 on the shape alone scores the same on the copy. Every child face keeps its
 parent's label in each human segmentation (`seg/ID/ID_i.seg`), and
@@ -30,6 +30,7 @@ import sys
 import numpy as np
 
 from make_order_meshes import read_off, subdivide, write_off
+from psb_human_scores import load
 
 
 def split_half(points, faces, levels, half):
@@ -104,7 +105,7 @@ def main():
         seg_out = os.path.join(args.out, "seg", model)
         os.makedirs(seg_out, exist_ok=True)
         for name in sorted(os.listdir(seg_in)):
-            labels = np.loadtxt(os.path.join(seg_in, name), dtype=np.int64, ndmin=1)
+            labels = load(os.path.join(seg_in, name))
             np.savetxt(os.path.join(seg_out, name), labels[parent], fmt="%d")
         row = list(row)
         row[header.index("faces")] = str(len(faces))
