@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Mesh_geometry.h>
 #include <SpectralSeg/internal/contact_adjacencies.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 #include <SpectralSeg/named_parameters.h>
 
 #include <boost/graph/compressed_sparse_row_graph.hpp>
@@ -163,141 +164,15 @@ public:
   }
 
 private:
-  void build(const std::vector<Adjacency>& adjacencies)
-  {
-    const std::size_t nf = geometry_.number_of_faces();
-    edges_.clear();
-    edges_.reserve(adjacencies.size());
-    // the arcs (both directions of each edge) in the order of (source,
-    // target, edge): counted per source face, then each face's few arcs
-    // sorted (a counting sort, linear in the number of edges)
-    std::vector<std::size_t> first(nf + 1, 0);
-    for(const Adjacency& a : adjacencies)
-    {
-      if(a.f0 >= nf || a.f1 >= nf || a.f0 == a.f1)
-        throw Invalid_input("invalid face adjacency (" + std::to_string(a.f0) + ", " + std::to_string(a.f1) + ")");
-      Edge edge;
-      edge.face[0] = a.f0;
-      edge.face[1] = a.f1;
-      edge.vertex[0] = a.v0;
-      edge.vertex[1] = a.v1;
-      edge.contact = a.contact_length > 0.;
-      edge.length = a.contact_length;
-      edges_.push_back(edge);
-      ++first[a.f0 + 1];
-      ++first[a.f1 + 1];
-    }
-    for(std::size_t f = 0; f < nf; ++f)
-      first[f + 1] += first[f];
-    std::vector<std::pair<size_type, size_type>> arcs(first[nf]); // (target, edge), then (source, target)
-    {
-      std::vector<std::size_t> next(first.begin(), first.end() - 1);
-      for(size_type e = 0; e < static_cast<size_type>(edges_.size()); ++e)
-      {
-        arcs[next[edges_[e].face[0]]++] = {edges_[e].face[1], e};
-        arcs[next[edges_[e].face[1]]++] = {edges_[e].face[0], e};
-      }
-    }
-    std::vector<Arc> arc_props(arcs.size());
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      std::sort(arcs.begin() + std::ptrdiff_t(first[f]), arcs.begin() + std::ptrdiff_t(first[f + 1]));
-      for(std::size_t i = first[f]; i < first[f + 1]; ++i)
-      {
-        arc_props[i] = Arc{arcs[i].second};
-        arcs[i] = {static_cast<size_type>(f), arcs[i].first};
-      }
-    }
-    csr_ = Csr(boost::edges_are_sorted, arcs.begin(), arcs.end(), arc_props.begin(),
-               static_cast<size_type>(nf));
-
-    fill_degenerate_normals();
-    compute_edge_geometry();
-    compute_components();
-  }
+  void build(const std::vector<Adjacency>& adjacencies);
 
   // Degenerate faces take the area-weighted mean normal of their neighbours
   // with a defined normal; repeated so that runs of degenerate faces fill in.
-  void fill_degenerate_normals()
-  {
-    std::vector<size_type> pending;
-    for(size_type f = 0; f < number_of_faces(); ++f)
-      if(geometry_.degenerate[f])
-        pending.push_back(f);
-    while(!pending.empty())
-    {
-      std::vector<std::pair<size_type, Eigen::Vector3d>> filled;
-      std::vector<size_type> still;
-      for(size_type f : pending)
-      {
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        for_each_neighbour(f, [&](size_type g, size_type) {
-          sum += (geometry_.areas[g] > 0 ? geometry_.areas[g] : 1.) * geometry_.normals[g];
-        });
-        const double len = sum.norm();
-        if(len > 0 && std::isfinite(len))
-          filled.emplace_back(f, sum / len);
-        else
-          still.push_back(f);
-      }
-      if(filled.empty())
-        break; // isolated degenerate faces keep a zero normal
-      for(const auto& fn : filled)
-        geometry_.normals[fn.first] = fn.second;
-      pending.swap(still);
-    }
-  }
+  void fill_degenerate_normals();
 
-  void compute_edge_geometry()
-  {
-    longest_edge_ = 0.;
-    for(Edge& e : edges_)
-    {
-      const Eigen::Vector3d& p = geometry_.points[e.vertex[0]];
-      const Eigen::Vector3d& q = geometry_.points[e.vertex[1]];
-      const Eigen::Vector3d& c0 = geometry_.centroids[e.face[0]];
-      const Eigen::Vector3d& c1 = geometry_.centroids[e.face[1]];
-      const Eigen::Vector3d& n0 = geometry_.normals[e.face[0]];
-      const Eigen::Vector3d& n1 = geometry_.normals[e.face[1]];
-      const Eigen::Vector3d m = 0.5 * (p + q);
-      if(!e.contact)
-        e.length = (q - p).norm();
-      e.geodesic_length = (c0 - m).norm() + (c1 - m).norm();
-      const internal::Fold fold = internal::fold_between(n0, n1, c0, c1);
-      e.normal_angle = fold.angle;
-      e.concave = fold.concave;
-      longest_edge_ = std::max(longest_edge_, e.length);
-    }
-  }
+  void compute_edge_geometry();
 
-  void compute_components()
-  {
-    const size_type nf = number_of_faces();
-    const size_type unset = static_cast<size_type>(-1);
-    component_.assign(nf, unset);
-    components_ = 0;
-    std::vector<size_type> stack;
-    for(size_type s = 0; s < nf; ++s)
-    {
-      if(component_[s] != unset)
-        continue;
-      component_[s] = components_;
-      stack.push_back(s);
-      while(!stack.empty())
-      {
-        const size_type f = stack.back();
-        stack.pop_back();
-        for_each_neighbour(f, [&](size_type g, size_type) {
-          if(component_[g] == unset)
-          {
-            component_[g] = components_;
-            stack.push_back(g);
-          }
-        });
-      }
-      ++components_;
-    }
-  }
+  void compute_components();
 
   Mesh_geometry geometry_;
   std::vector<Edge> edges_;
@@ -307,6 +182,142 @@ private:
   std::vector<size_type> component_;
   size_type components_ = 0;
 };
+
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+SPECTRALSEG_INLINE void Dual_graph::build(const std::vector<Adjacency>& adjacencies)
+{
+  const std::size_t nf = geometry_.number_of_faces();
+  edges_.clear();
+  edges_.reserve(adjacencies.size());
+  // the arcs (both directions of each edge) in the order of (source,
+  // target, edge): counted per source face, then each face's few arcs
+  // sorted (a counting sort, linear in the number of edges)
+  std::vector<std::size_t> first(nf + 1, 0);
+  for(const Adjacency& a : adjacencies)
+  {
+    if(a.f0 >= nf || a.f1 >= nf || a.f0 == a.f1)
+      throw Invalid_input("invalid face adjacency (" + std::to_string(a.f0) + ", " + std::to_string(a.f1) + ")");
+    Edge edge;
+    edge.face[0] = a.f0;
+    edge.face[1] = a.f1;
+    edge.vertex[0] = a.v0;
+    edge.vertex[1] = a.v1;
+    edge.contact = a.contact_length > 0.;
+    edge.length = a.contact_length;
+    edges_.push_back(edge);
+    ++first[a.f0 + 1];
+    ++first[a.f1 + 1];
+  }
+  for(std::size_t f = 0; f < nf; ++f)
+    first[f + 1] += first[f];
+  std::vector<std::pair<size_type, size_type>> arcs(first[nf]); // (target, edge), then (source, target)
+  {
+    std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for(size_type e = 0; e < static_cast<size_type>(edges_.size()); ++e)
+    {
+      arcs[next[edges_[e].face[0]]++] = {edges_[e].face[1], e};
+      arcs[next[edges_[e].face[1]]++] = {edges_[e].face[0], e};
+    }
+  }
+  std::vector<Arc> arc_props(arcs.size());
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    std::sort(arcs.begin() + std::ptrdiff_t(first[f]), arcs.begin() + std::ptrdiff_t(first[f + 1]));
+    for(std::size_t i = first[f]; i < first[f + 1]; ++i)
+    {
+      arc_props[i] = Arc{arcs[i].second};
+      arcs[i] = {static_cast<size_type>(f), arcs[i].first};
+    }
+  }
+  csr_ = Csr(boost::edges_are_sorted, arcs.begin(), arcs.end(), arc_props.begin(),
+             static_cast<size_type>(nf));
+
+  fill_degenerate_normals();
+  compute_edge_geometry();
+  compute_components();
+}
+
+SPECTRALSEG_INLINE void Dual_graph::fill_degenerate_normals()
+{
+  std::vector<size_type> pending;
+  for(size_type f = 0; f < number_of_faces(); ++f)
+    if(geometry_.degenerate[f])
+      pending.push_back(f);
+  while(!pending.empty())
+  {
+    std::vector<std::pair<size_type, Eigen::Vector3d>> filled;
+    std::vector<size_type> still;
+    for(size_type f : pending)
+    {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for_each_neighbour(f, [&](size_type g, size_type) {
+        sum += (geometry_.areas[g] > 0 ? geometry_.areas[g] : 1.) * geometry_.normals[g];
+      });
+      const double len = sum.norm();
+      if(len > 0 && std::isfinite(len))
+        filled.emplace_back(f, sum / len);
+      else
+        still.push_back(f);
+    }
+    if(filled.empty())
+      break; // isolated degenerate faces keep a zero normal
+    for(const auto& fn : filled)
+      geometry_.normals[fn.first] = fn.second;
+    pending.swap(still);
+  }
+}
+
+SPECTRALSEG_INLINE void Dual_graph::compute_edge_geometry()
+{
+  longest_edge_ = 0.;
+  for(Edge& e : edges_)
+  {
+    const Eigen::Vector3d& p = geometry_.points[e.vertex[0]];
+    const Eigen::Vector3d& q = geometry_.points[e.vertex[1]];
+    const Eigen::Vector3d& c0 = geometry_.centroids[e.face[0]];
+    const Eigen::Vector3d& c1 = geometry_.centroids[e.face[1]];
+    const Eigen::Vector3d& n0 = geometry_.normals[e.face[0]];
+    const Eigen::Vector3d& n1 = geometry_.normals[e.face[1]];
+    const Eigen::Vector3d m = 0.5 * (p + q);
+    if(!e.contact)
+      e.length = (q - p).norm();
+    e.geodesic_length = (c0 - m).norm() + (c1 - m).norm();
+    const internal::Fold fold = internal::fold_between(n0, n1, c0, c1);
+    e.normal_angle = fold.angle;
+    e.concave = fold.concave;
+    longest_edge_ = std::max(longest_edge_, e.length);
+  }
+}
+
+SPECTRALSEG_INLINE void Dual_graph::compute_components()
+{
+  const size_type nf = number_of_faces();
+  const size_type unset = static_cast<size_type>(-1);
+  component_.assign(nf, unset);
+  components_ = 0;
+  std::vector<size_type> stack;
+  for(size_type s = 0; s < nf; ++s)
+  {
+    if(component_[s] != unset)
+      continue;
+    component_[s] = components_;
+    stack.push_back(s);
+    while(!stack.empty())
+    {
+      const size_type f = stack.back();
+      stack.pop_back();
+      for_each_neighbour(f, [&](size_type g, size_type) {
+        if(component_[g] == unset)
+        {
+          component_[g] = components_;
+          stack.push_back(g);
+        }
+      });
+    }
+    ++components_;
+  }
+}
+#endif
 
 /// \ingroup PkgSpectralSegCore
 /// \brief Builds the dual graph of a triangle mesh.

@@ -6,6 +6,7 @@
 #define SPECTRALSEG_MESH_GEOMETRY_H
 
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 #include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -70,49 +71,53 @@ struct Mesh_geometry
   /// from `points` and `triangles`; throws `Invalid_input` on a non-finite
   /// coordinate or an out-of-range vertex index. Degenerate faces get a zero
   /// normal here; `Dual_graph` then gives them their neighbours' normal.
-  void compute_face_attributes()
-  {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector3d hi = -lo;
-    for(std::size_t v = 0; v < points.size(); ++v)
-    {
-      const Eigen::Vector3d& p = points[v];
-      if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-        throw Invalid_input("vertex " + std::to_string(v) + " has a non-finite coordinate (NaN or infinity)");
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-    bbox_diagonal = points.empty() ? 0. : (hi - lo).norm();
-    const double area_tolerance = 1e-14 * bbox_diagonal * bbox_diagonal;
-
-    const std::size_t nf = triangles.size();
-    centroids.resize(nf);
-    normals.resize(nf);
-    areas.resize(nf);
-    degenerate.assign(nf, 0);
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      for(std::uint32_t v : triangles[f])
-        if(v >= points.size())
-          throw Invalid_input("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
-                              " but the mesh has " + std::to_string(points.size()) + " vertices");
-      const Eigen::Vector3d& a = points[triangles[f][0]];
-      const Eigen::Vector3d& b = points[triangles[f][1]];
-      const Eigen::Vector3d& c = points[triangles[f][2]];
-      centroids[f] = (a + b + c) / 3.;
-      const Eigen::Vector3d n = (b - a).cross(c - a);
-      const double twice_area = n.norm();
-      areas[f] = 0.5 * twice_area;
-      if(areas[f] <= area_tolerance || !(twice_area > 0))
-      {
-        degenerate[f] = 1;
-        normals[f].setZero();
-      }
-      else
-        normals[f] = n / twice_area;
-    }
-  }
+  void compute_face_attributes();
 };
+
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+SPECTRALSEG_INLINE void Mesh_geometry::compute_face_attributes()
+{
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for(std::size_t v = 0; v < points.size(); ++v)
+  {
+    const Eigen::Vector3d& p = points[v];
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Invalid_input("vertex " + std::to_string(v) + " has a non-finite coordinate (NaN or infinity)");
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  bbox_diagonal = points.empty() ? 0. : (hi - lo).norm();
+  const double area_tolerance = 1e-14 * bbox_diagonal * bbox_diagonal;
+
+  const std::size_t nf = triangles.size();
+  centroids.resize(nf);
+  normals.resize(nf);
+  areas.resize(nf);
+  degenerate.assign(nf, 0);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    for(std::uint32_t v : triangles[f])
+      if(v >= points.size())
+        throw Invalid_input("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                            " but the mesh has " + std::to_string(points.size()) + " vertices");
+    const Eigen::Vector3d& a = points[triangles[f][0]];
+    const Eigen::Vector3d& b = points[triangles[f][1]];
+    const Eigen::Vector3d& c = points[triangles[f][2]];
+    centroids[f] = (a + b + c) / 3.;
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    const double twice_area = n.norm();
+    areas[f] = 0.5 * twice_area;
+    if(areas[f] <= area_tolerance || !(twice_area > 0))
+    {
+      degenerate[f] = 1;
+      normals[f].setZero();
+    }
+    else
+      normals[f] = n / twice_area;
+  }
+}
+#endif
 
 /// \ingroup PkgSpectralSegCore
 /// \brief Copies the geometry of a triangle mesh into a `Mesh_geometry`.

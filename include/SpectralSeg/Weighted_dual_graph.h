@@ -9,6 +9,7 @@
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/Metrics/normalize_weights.h>
 #include <SpectralSeg/internal/parallel_for.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 #include <boost/graph/dijkstra_shortest_paths_no_color_map.hpp>
@@ -55,14 +56,7 @@ public:
   /// \pre `graph` outlives this object
   /// \param weights one finite, non-negative weight per dual edge
   /// \throws Invalid_input if the weights are not valid
-  Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights)
-    : graph_(graph), weights_(weights), arc_weights_(num_edges(graph.csr()))
-  {
-    Metrics::check_weights(graph, weights);
-    const Dual_graph::Csr& g = graph.csr();
-    for(auto e : boost::make_iterator_range(boost::edges(g)))
-      arc_weights_[get(boost::edge_index, g, e)] = weights[g[e].dual_edge];
-  }
+  Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights);
 
   /// a temporary graph would dangle: keep the graph alive while this object is used
   Weighted_dual_graph(Dual_graph&&, const std::vector<double>&) = delete;
@@ -95,16 +89,7 @@ public:
   /// face. Rows are computed in parallel; each row is one Dijkstra run, so
   /// the result does not depend on the number of threads.
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
-  distance_rows(const std::vector<size_type>& sources, const Execution& exec = Execution()) const
-  {
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows(
-      static_cast<Eigen::Index>(sources.size()), static_cast<Eigen::Index>(graph_.number_of_faces()));
-    internal::parallel_for(sources.size(), exec, "distance rows", [&](std::size_t i) {
-      const std::vector<double> d = distances(sources[i]);
-      rows.row(static_cast<Eigen::Index>(i)) = Eigen::Map<const Eigen::RowVectorXd>(d.data(), static_cast<Eigen::Index>(d.size()));
-    });
-    return rows;
-  }
+  distance_rows(const std::vector<size_type>& sources, const Execution& exec = Execution()) const;
 
   /// Adds a source to nearest-source distances: wherever `source` is
   /// closer than `distance[f]`, lowers `distance[f]` to its distance from
@@ -116,80 +101,13 @@ public:
   /// \throws Invalid_input if `source` is out of range or `distance` or
   /// `nearest` does not have one entry per face
   void add_source(size_type source, std::size_t label, std::vector<double>& distance,
-                  std::vector<std::size_t>& nearest) const
-  {
-    const Dual_graph::Csr& g = graph_.csr();
-    const std::size_t n = graph_.number_of_faces();
-    if(source >= n)
-      throw Invalid_input("add_source: source face " + std::to_string(source) + " is out of range (the mesh has " +
-                          std::to_string(n) + " faces)");
-    if(distance.size() != n || nearest.size() != n)
-      throw Invalid_input("add_source: " + std::to_string(distance.size()) + " distances and " +
-                          std::to_string(nearest.size()) + " nearest sources for " + std::to_string(n) + " faces");
-    if(!(distance[source] > 0.))
-      return;
-    typedef std::pair<double, size_type> Entry;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    distance[source] = 0.;
-    nearest[source] = label;
-    queue.emplace(0., source);
-    while(!queue.empty())
-    {
-      const Entry top = queue.top();
-      queue.pop();
-      if(top.first > distance[top.second]) // lowered since it was queued
-        continue;
-      for(auto e : boost::make_iterator_range(boost::out_edges(top.second, g)))
-      {
-        const size_type v = boost::target(e, g);
-        const double d = top.first + arc_weights_[get(boost::edge_index, g, e)];
-        if(d < distance[v])
-        {
-          distance[v] = d;
-          nearest[v] = label;
-          queue.emplace(d, v);
-        }
-      }
-    }
-  }
+                  std::vector<std::size_t>& nearest) const;
 
 private:
   // One Dijkstra run from `sources`; records the nearest source only when
   // `nearest` is given (the single-source queries of distance_rows() skip it).
   void run(const std::vector<size_type>& sources, std::vector<double>& distance,
-           std::vector<std::size_t>* nearest) const
-  {
-    const Dual_graph::Csr& g = graph_.csr();
-    const std::size_t n = graph_.number_of_faces();
-    if(sources.empty())
-      throw Invalid_input("distances: no source face given");
-    for(size_type s : sources)
-      if(s >= n)
-        throw Invalid_input("distances: source face " + std::to_string(s) + " is out of range (the mesh has " +
-                            std::to_string(n) + " faces)");
-    distance.assign(n, std::numeric_limits<double>::infinity());
-    const auto index = get(boost::vertex_index, g);
-    const auto weight = boost::make_iterator_property_map(arc_weights_.begin(), get(boost::edge_index, g));
-    const auto dmap = boost::make_iterator_property_map(distance.begin(), index);
-    const double inf = std::numeric_limits<double>::infinity();
-    if(nearest)
-    {
-      nearest->assign(n, Nearest_source_distances::unreachable);
-      for(std::size_t i = sources.size(); i-- > 0;) // the first listed source wins a duplicate
-        (*nearest)[sources[i]] = i;
-      boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
-                                     index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
-                                     boost::make_dijkstra_visitor(Nearest_recorder{nearest}));
-    }
-    else if(sources.size() == 1)
-      boost::dijkstra_shortest_paths_no_color_map(g, sources.front(), boost::dummy_property_map(), dmap, weight, index,
-                                                  std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
-                                                  boost::default_dijkstra_visitor());
-    else
-      boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
-                                     index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
-                                     boost::default_dijkstra_visitor());
-  }
+           std::vector<std::size_t>* nearest) const;
 
   struct Nearest_recorder
   {
@@ -206,6 +124,102 @@ private:
   std::vector<double> weights_;
   std::vector<double> arc_weights_;
 };
+
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+SPECTRALSEG_INLINE Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
+Weighted_dual_graph::distance_rows(const std::vector<size_type>& sources, const Execution& exec) const
+{
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows(
+    static_cast<Eigen::Index>(sources.size()), static_cast<Eigen::Index>(graph_.number_of_faces()));
+  internal::parallel_for(sources.size(), exec, "distance rows", [&](std::size_t i) {
+    const std::vector<double> d = distances(sources[i]);
+    rows.row(static_cast<Eigen::Index>(i)) = Eigen::Map<const Eigen::RowVectorXd>(d.data(), static_cast<Eigen::Index>(d.size()));
+  });
+  return rows;
+}
+
+SPECTRALSEG_INLINE void Weighted_dual_graph::add_source(size_type source, std::size_t label, std::vector<double>& distance,
+                                                        std::vector<std::size_t>& nearest) const
+{
+  const Dual_graph::Csr& g = graph_.csr();
+  const std::size_t n = graph_.number_of_faces();
+  if(source >= n)
+    throw Invalid_input("add_source: source face " + std::to_string(source) + " is out of range (the mesh has " +
+                        std::to_string(n) + " faces)");
+  if(distance.size() != n || nearest.size() != n)
+    throw Invalid_input("add_source: " + std::to_string(distance.size()) + " distances and " +
+                        std::to_string(nearest.size()) + " nearest sources for " + std::to_string(n) + " faces");
+  if(!(distance[source] > 0.))
+    return;
+  typedef std::pair<double, size_type> Entry;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  distance[source] = 0.;
+  nearest[source] = label;
+  queue.emplace(0., source);
+  while(!queue.empty())
+  {
+    const Entry top = queue.top();
+    queue.pop();
+    if(top.first > distance[top.second]) // lowered since it was queued
+      continue;
+    for(auto e : boost::make_iterator_range(boost::out_edges(top.second, g)))
+    {
+      const size_type v = boost::target(e, g);
+      const double d = top.first + arc_weights_[get(boost::edge_index, g, e)];
+      if(d < distance[v])
+      {
+        distance[v] = d;
+        nearest[v] = label;
+        queue.emplace(d, v);
+      }
+    }
+  }
+}
+
+SPECTRALSEG_INLINE void Weighted_dual_graph::run(const std::vector<size_type>& sources, std::vector<double>& distance,
+                                                 std::vector<std::size_t>* nearest) const
+{
+  const Dual_graph::Csr& g = graph_.csr();
+  const std::size_t n = graph_.number_of_faces();
+  if(sources.empty())
+    throw Invalid_input("distances: no source face given");
+  for(size_type s : sources)
+    if(s >= n)
+      throw Invalid_input("distances: source face " + std::to_string(s) + " is out of range (the mesh has " +
+                          std::to_string(n) + " faces)");
+  distance.assign(n, std::numeric_limits<double>::infinity());
+  const auto index = get(boost::vertex_index, g);
+  const auto weight = boost::make_iterator_property_map(arc_weights_.begin(), get(boost::edge_index, g));
+  const auto dmap = boost::make_iterator_property_map(distance.begin(), index);
+  const double inf = std::numeric_limits<double>::infinity();
+  if(nearest)
+  {
+    nearest->assign(n, Nearest_source_distances::unreachable);
+    for(std::size_t i = sources.size(); i-- > 0;) // the first listed source wins a duplicate
+      (*nearest)[sources[i]] = i;
+    boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
+                                   index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
+                                   boost::make_dijkstra_visitor(Nearest_recorder{nearest}));
+  }
+  else if(sources.size() == 1)
+    boost::dijkstra_shortest_paths_no_color_map(g, sources.front(), boost::dummy_property_map(), dmap, weight, index,
+                                                std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
+                                                boost::default_dijkstra_visitor());
+  else
+    boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
+                                   index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
+                                   boost::default_dijkstra_visitor());
+}
+
+SPECTRALSEG_INLINE Weighted_dual_graph::Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights)
+  : graph_(graph), weights_(weights), arc_weights_(num_edges(graph.csr()))
+{
+  Metrics::check_weights(graph, weights);
+  const Dual_graph::Csr& g = graph.csr();
+  for(auto e : boost::make_iterator_range(boost::edges(g)))
+    arc_weights_[get(boost::edge_index, g, e)] = weights[g[e].dual_edge];
+}
+#endif
 
 } // namespace SpectralSeg
 

@@ -508,6 +508,14 @@ Automatic_segmentation_result segment_automatically(const Dual_graph& graph, con
   return r;
 }
 
+/// \cond SKIP_IN_MANUAL
+#if SPECTRALSEG_DEFAULT_INSTANCES
+SPECTRALSEG_INSTANTIATE Automatic_segmentation_result segment_automatically<Salience::Thesis_salience>(
+  const Dual_graph&, const std::vector<double>&, const Automatic_segmentation_options<Salience::Thesis_salience>&,
+  const Execution&);
+#endif
+/// \endcond
+
 /// \ingroup PkgSpectralSegAutomatic
 /// \brief The methods of `automatic_segmentation()`.
 enum class Automatic_method

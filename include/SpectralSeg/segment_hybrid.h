@@ -9,6 +9,7 @@
 
 #include <SpectralSeg/Clustering/Kmeans.h>
 #include <SpectralSeg/K_way_options.h>
+#include <SpectralSeg/Kernels/Any_kernel.h>
 #include <SpectralSeg/Refinement/connected_segments.h>
 #include <SpectralSeg/Refinement/crease_regions.h>
 #include <SpectralSeg/Refinement/graph_cut_boundaries.h>
@@ -19,6 +20,7 @@
 #include <SpectralSeg/internal/Stage_timer.h>
 #include <SpectralSeg/internal/merge_by_contrast.h>
 #include <SpectralSeg/internal/most_typical_merge.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 #include <SpectralSeg/segment_k_way.h>
 
 #include <algorithm>
@@ -224,6 +226,15 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   internal::graph_cut_merged(graph, m, clusters, options.k_way, r, exec, &lap);
   return r;
 }
+
+/// \cond SKIP_IN_MANUAL
+#if SPECTRALSEG_DEFAULT_INSTANCES
+SPECTRALSEG_INSTANTIATE K_way_result segment_hybrid<Kernels::Exponential_kernel>(
+  const Weighted_dual_graph&, const Basic_hybrid_options<Kernels::Exponential_kernel>&, const Execution&);
+SPECTRALSEG_INSTANTIATE K_way_result segment_hybrid<Kernels::Any_kernel>(
+  const Weighted_dual_graph&, const Basic_hybrid_options<Kernels::Any_kernel>&, const Execution&);
+#endif
+/// \endcond
 
 } // namespace SpectralSeg
 

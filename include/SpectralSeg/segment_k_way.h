@@ -10,6 +10,7 @@
 #include <SpectralSeg/Embedding/exact_spectral_embedding.h>
 #include <SpectralSeg/Embedding/nystrom_spectral_embedding.h>
 #include <SpectralSeg/K_way_options.h>
+#include <SpectralSeg/Kernels/Any_kernel.h>
 #include <SpectralSeg/Refinement/concave_normalized_cut.h>
 #include <SpectralSeg/Refinement/connected_segments.h>
 #include <SpectralSeg/Refinement/crease_regions.h>
@@ -593,6 +594,19 @@ K_way_result segment_k_way_automatic(const Weighted_dual_graph& graph,
     r.embedding.coordinates.resize(0, 0);
   return r;
 }
+
+/// \cond SKIP_IN_MANUAL
+#if SPECTRALSEG_DEFAULT_INSTANCES
+SPECTRALSEG_INSTANTIATE K_way_result segment_k_way<Kernels::Exponential_kernel>(
+  const Weighted_dual_graph&, std::size_t, const Basic_K_way_options<Kernels::Exponential_kernel>&, const Execution&);
+SPECTRALSEG_INSTANTIATE K_way_result segment_k_way_automatic<Kernels::Exponential_kernel>(
+  const Weighted_dual_graph&, const Basic_K_way_automatic_options<Kernels::Exponential_kernel>&, const Execution&);
+SPECTRALSEG_INSTANTIATE K_way_result segment_k_way<Kernels::Any_kernel>(
+  const Weighted_dual_graph&, std::size_t, const Basic_K_way_options<Kernels::Any_kernel>&, const Execution&);
+SPECTRALSEG_INSTANTIATE K_way_result segment_k_way_automatic<Kernels::Any_kernel>(
+  const Weighted_dual_graph&, const Basic_K_way_automatic_options<Kernels::Any_kernel>&, const Execution&);
+#endif
+/// \endcond
 
 /// \cond SKIP_IN_MANUAL
 // Deprecated positional forms (kernel, options and, for the automatic rule,

@@ -10,7 +10,9 @@
 #include <SpectralSeg/IO/internal/triangulate_polygon.h>
 #include <SpectralSeg/IO/triangle_soup_to_mesh.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <string>
@@ -32,6 +34,11 @@ Mesh_file_report read_mesh_bytes(const File_bytes& file, const std::string& form
   report.path = file.path;
   return report;
 }
+
+#if SPECTRALSEG_DEFAULT_INSTANCES
+SPECTRALSEG_INSTANTIATE Mesh_file_report read_mesh_bytes<CGAL::Epick::Point_3>(const File_bytes&, const std::string&,
+                                                                             CGAL::Surface_mesh<CGAL::Epick::Point_3>&);
+#endif
 
 } // namespace internal
 /// \endcond

@@ -12,7 +12,9 @@
 #include <SpectralSeg/IO/internal/repair_polygon_soup.h>
 #include <SpectralSeg/IO/internal/spatial_order.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -186,6 +188,14 @@ Mesh_file_report triangle_soup_to_mesh(const std::vector<std::array<double, 3>>&
   const auto no_polygons = [](const std::vector<Point>&) { return std::vector<std::array<std::size_t, 3>>(); };
   return internal::polygon_soup_to_mesh(soup, "the triangle soup", mesh, no_polygons);
 }
+
+/// \cond SKIP_IN_MANUAL
+#if SPECTRALSEG_DEFAULT_INSTANCES
+SPECTRALSEG_INSTANTIATE Mesh_file_report triangle_soup_to_mesh<CGAL::Epick::Point_3>(
+  const std::vector<std::array<double, 3>>&, const std::vector<std::array<std::size_t, 3>>&,
+  CGAL::Surface_mesh<CGAL::Epick::Point_3>&);
+#endif
+/// \endcond
 
 } // namespace IO
 } // namespace SpectralSeg

@@ -9,6 +9,7 @@
 #include <SpectralSeg/Metrics/Blend.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
 #include <SpectralSeg/Metrics/VSI_weight.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 #ifdef SPECTRALSEG_HAS_EMBREE
 #include <SpectralSeg/Ray_casting/Embree_ray_caster.h>
 #endif
@@ -35,6 +36,13 @@ typedef AABB_ray_caster Default_ray_caster;
 } // namespace Ray_casting
 
 namespace Metrics {
+
+/// \cond SKIP_IN_MANUAL
+#if SPECTRALSEG_DEFAULT_INSTANCES && defined(SPECTRALSEG_HAS_EMBREE)
+SPECTRALSEG_INSTANTIATE VSI_result compute_vsi<Ray_casting::Embree_ray_caster>(
+  const Dual_graph&, const Ray_casting::Embree_ray_caster&, const VSI_options&, const Execution&);
+#endif
+/// \endcond
 
 /// \ingroup PkgSpectralSegMetrics
 /// \brief The library's default metric: a `Blend` of `Geodesic_weight`,

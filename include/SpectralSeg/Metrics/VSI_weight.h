@@ -116,6 +116,13 @@ VSI_result compute_vsi(const Dual_graph& graph, const RayCaster& caster, const V
   return r;
 }
 
+/// \cond SKIP_IN_MANUAL
+#if SPECTRALSEG_DEFAULT_INSTANCES
+SPECTRALSEG_INSTANTIATE VSI_result compute_vsi<Ray_casting::AABB_ray_caster>(
+  const Dual_graph&, const Ray_casting::AABB_ray_caster&, const VSI_options&, const Execution&);
+#endif
+/// \endcond
+
 /// \ingroup PkgSpectralSegVSI
 /// \brief The VSI distance, which makes the borders between parts expensive
 /// to cross: each face is mapped to a reference point inside the shape, the

@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Mesh_geometry.h>
 #include <SpectralSeg/Ray_casting/internal/near_distance.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <CGAL/version.h>
 #include <CGAL/AABB_tree.h>
@@ -59,23 +60,7 @@ public:
 
   /// builds the tree over the faces of `geometry` (which need not outlive this object);
   /// degenerate faces are left out
-  explicit AABB_ray_caster(const Mesh_geometry& geometry)
-  {
-    triangles_.reserve(geometry.number_of_faces());
-    face_of_triangle_.reserve(geometry.number_of_faces());
-    for(std::size_t f = 0; f < geometry.number_of_faces(); ++f)
-    {
-      if(geometry.degenerate[f])
-        continue;
-      const auto& t = geometry.triangles[f];
-      triangles_.emplace_back(point(geometry.points[t[0]]), point(geometry.points[t[1]]),
-                              point(geometry.points[t[2]]));
-      face_of_triangle_.push_back(static_cast<size_type>(f));
-    }
-    tree_.insert(triangles_.cbegin(), triangles_.cend());
-    tree_.build();
-    near_ = internal::near_distance_fraction * geometry.bbox_diagonal;
-  }
+  explicit AABB_ray_caster(const Mesh_geometry& geometry);
 
   AABB_ray_caster(const AABB_ray_caster&) = delete;
   AABB_ray_caster& operator=(const AABB_ray_caster&) = delete;
@@ -234,6 +219,26 @@ private:
   Tree tree_;
   double near_ = 0.; // hits closer than this do not count
 };
+
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+SPECTRALSEG_INLINE AABB_ray_caster::AABB_ray_caster(const Mesh_geometry& geometry)
+{
+  triangles_.reserve(geometry.number_of_faces());
+  face_of_triangle_.reserve(geometry.number_of_faces());
+  for(std::size_t f = 0; f < geometry.number_of_faces(); ++f)
+  {
+    if(geometry.degenerate[f])
+      continue;
+    const auto& t = geometry.triangles[f];
+    triangles_.emplace_back(point(geometry.points[t[0]]), point(geometry.points[t[1]]),
+                            point(geometry.points[t[2]]));
+    face_of_triangle_.push_back(static_cast<size_type>(f));
+  }
+  tree_.insert(triangles_.cbegin(), triangles_.cend());
+  tree_.build();
+  near_ = internal::near_distance_fraction * geometry.bbox_diagonal;
+}
+#endif
 
 } // namespace Ray_casting
 } // namespace SpectralSeg

@@ -11,6 +11,7 @@
 #include <SpectralSeg/Mesh_geometry.h>
 #include <SpectralSeg/Ray_casting/internal/near_distance.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <embree3/rtcore.h>
 
@@ -81,83 +82,7 @@ public:
   /// \throws Error if Embree cannot create its device or fails to build the
   /// scene (out of memory, unsupported CPU, ...); the message gives Embree's
   /// error code and text.
-  explicit Embree_ray_caster(const Mesh_geometry& geometry)
-  {
-    device_.reset(rtcNewDevice(nullptr));
-    if(!device_)
-      throw Error("Embree_ray_caster: cannot create an Embree device (" +
-                  error_text(rtcGetDeviceError(nullptr)) + ")");
-    // Collect Embree's error messages while building (queries report none).
-    Error_log log;
-    rtcSetDeviceErrorFunction(device_.get(), &Embree_ray_caster::record_error, &log);
-
-    // The triangles kept, and the centre of their bounding box.
-    std::vector<std::uint32_t> indices;
-    indices.reserve(3 * geometry.number_of_faces());
-    face_of_primitive_.reserve(geometry.number_of_faces());
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-    Eigen::Vector3d hi = -lo;
-    for(std::size_t f = 0; f < geometry.number_of_faces(); ++f)
-    {
-      if(geometry.degenerate[f])
-        continue;
-      for(std::uint32_t v : geometry.triangles[f])
-      {
-        indices.push_back(v);
-        lo = lo.cwiseMin(geometry.points[v]);
-        hi = hi.cwiseMax(geometry.points[v]);
-      }
-      face_of_primitive_.push_back(static_cast<size_type>(f));
-    }
-    if(!face_of_primitive_.empty())
-    {
-      centre_ = 0.5 * (lo + hi);
-      tnear_ = float(internal::near_distance_fraction * geometry.bbox_diagonal);
-    }
-
-    scene_.reset(rtcNewScene(device_.get()));
-    bool triangles_attached = face_of_primitive_.empty();
-    if(scene_ && !face_of_primitive_.empty())
-    {
-      Geometry_handle mesh(rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE));
-      if(mesh)
-      {
-        // Embree pads buffers it allocates itself as its vector loads need.
-        float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-          mesh.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), geometry.points.size()));
-        unsigned* triangles = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-          mesh.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), face_of_primitive_.size()));
-        if(vertices && triangles)
-        {
-          for(std::size_t v = 0; v < geometry.points.size(); ++v)
-          {
-            const Eigen::Vector3d p = geometry.points[v] - centre_;
-            vertices[3 * v + 0] = static_cast<float>(p.x());
-            vertices[3 * v + 1] = static_cast<float>(p.y());
-            vertices[3 * v + 2] = static_cast<float>(p.z());
-          }
-          std::copy(indices.begin(), indices.end(), triangles);
-          rtcSetGeometryBuildQuality(mesh.get(), RTC_BUILD_QUALITY_HIGH);
-          rtcCommitGeometry(mesh.get());
-          rtcAttachGeometry(scene_.get(), mesh.get());
-          triangles_attached = true;
-        }
-      }
-    }
-    if(scene_)
-    {
-      rtcSetSceneFlags(scene_.get(), RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
-      rtcSetSceneBuildQuality(scene_.get(), RTC_BUILD_QUALITY_HIGH);
-      rtcCommitScene(scene_.get());
-    }
-    const RTCError error = rtcGetDeviceError(device_.get());
-    rtcSetDeviceErrorFunction(device_.get(), nullptr, nullptr);
-    if(error != RTC_ERROR_NONE || !scene_ || !triangles_attached)
-      throw Error("Embree_ray_caster: Embree failed to build the scene of " +
-                  std::to_string(face_of_primitive_.size()) + " triangles (" +
-                  error_text(error == RTC_ERROR_NONE ? RTC_ERROR_UNKNOWN : error) +
-                  (log.message.empty() ? std::string() : ": " + log.message) + ")");
-  }
+  explicit Embree_ray_caster(const Mesh_geometry& geometry);
 
   /// not copyable: the object owns its Embree device and scene
   Embree_ray_caster(const Embree_ray_caster&) = delete;
@@ -310,19 +235,7 @@ private:
       log->message = message;
   }
 
-  static std::string error_text(RTCError error)
-  {
-    switch(error)
-    {
-    case RTC_ERROR_NONE: return "no error";
-    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
-    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
-    case RTC_ERROR_CANCELLED: return "cancelled";
-    default: return "unknown error";
-    }
-  }
+  static std::string error_text(RTCError error);
 
   struct Device_release
   {
@@ -345,6 +258,100 @@ private:
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();
   float tnear_ = 0.f;
 };
+
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+SPECTRALSEG_INLINE Embree_ray_caster::Embree_ray_caster(const Mesh_geometry& geometry)
+{
+  device_.reset(rtcNewDevice(nullptr));
+  if(!device_)
+    throw Error("Embree_ray_caster: cannot create an Embree device (" +
+                error_text(rtcGetDeviceError(nullptr)) + ")");
+  // Collect Embree's error messages while building (queries report none).
+  Error_log log;
+  rtcSetDeviceErrorFunction(device_.get(), &Embree_ray_caster::record_error, &log);
+
+  // The triangles kept, and the centre of their bounding box.
+  std::vector<std::uint32_t> indices;
+  indices.reserve(3 * geometry.number_of_faces());
+  face_of_primitive_.reserve(geometry.number_of_faces());
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for(std::size_t f = 0; f < geometry.number_of_faces(); ++f)
+  {
+    if(geometry.degenerate[f])
+      continue;
+    for(std::uint32_t v : geometry.triangles[f])
+    {
+      indices.push_back(v);
+      lo = lo.cwiseMin(geometry.points[v]);
+      hi = hi.cwiseMax(geometry.points[v]);
+    }
+    face_of_primitive_.push_back(static_cast<size_type>(f));
+  }
+  if(!face_of_primitive_.empty())
+  {
+    centre_ = 0.5 * (lo + hi);
+    tnear_ = float(internal::near_distance_fraction * geometry.bbox_diagonal);
+  }
+
+  scene_.reset(rtcNewScene(device_.get()));
+  bool triangles_attached = face_of_primitive_.empty();
+  if(scene_ && !face_of_primitive_.empty())
+  {
+    Geometry_handle mesh(rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE));
+    if(mesh)
+    {
+      // Embree pads buffers it allocates itself as its vector loads need.
+      float* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        mesh.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), geometry.points.size()));
+      unsigned* triangles = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        mesh.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), face_of_primitive_.size()));
+      if(vertices && triangles)
+      {
+        for(std::size_t v = 0; v < geometry.points.size(); ++v)
+        {
+          const Eigen::Vector3d p = geometry.points[v] - centre_;
+          vertices[3 * v + 0] = static_cast<float>(p.x());
+          vertices[3 * v + 1] = static_cast<float>(p.y());
+          vertices[3 * v + 2] = static_cast<float>(p.z());
+        }
+        std::copy(indices.begin(), indices.end(), triangles);
+        rtcSetGeometryBuildQuality(mesh.get(), RTC_BUILD_QUALITY_HIGH);
+        rtcCommitGeometry(mesh.get());
+        rtcAttachGeometry(scene_.get(), mesh.get());
+        triangles_attached = true;
+      }
+    }
+  }
+  if(scene_)
+  {
+    rtcSetSceneFlags(scene_.get(), RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    rtcSetSceneBuildQuality(scene_.get(), RTC_BUILD_QUALITY_HIGH);
+    rtcCommitScene(scene_.get());
+  }
+  const RTCError error = rtcGetDeviceError(device_.get());
+  rtcSetDeviceErrorFunction(device_.get(), nullptr, nullptr);
+  if(error != RTC_ERROR_NONE || !scene_ || !triangles_attached)
+    throw Error("Embree_ray_caster: Embree failed to build the scene of " +
+                std::to_string(face_of_primitive_.size()) + " triangles (" +
+                error_text(error == RTC_ERROR_NONE ? RTC_ERROR_UNKNOWN : error) +
+                (log.message.empty() ? std::string() : ": " + log.message) + ")");
+}
+
+SPECTRALSEG_INLINE std::string Embree_ray_caster::error_text(RTCError error)
+{
+  switch(error)
+  {
+  case RTC_ERROR_NONE: return "no error";
+  case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+  case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
+  case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+  case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
+  case RTC_ERROR_CANCELLED: return "cancelled";
+  default: return "unknown error";
+  }
+}
+#endif
 
 } // namespace Ray_casting
 } // namespace SpectralSeg

@@ -3,6 +3,8 @@
 #ifndef SPECTRALSEG_INTERNAL_POINT_NEIGHBOURS_H
 #define SPECTRALSEG_INTERNAL_POINT_NEIGHBOURS_H
 
+#include <SpectralSeg/internal/separate_compilation.h>
+
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -35,43 +37,50 @@ public:
   Point_neighbours(const Point_neighbours&) = delete;
   Point_neighbours& operator=(const Point_neighbours&) = delete;
 
-  explicit Point_neighbours(const std::vector<Eigen::Vector3d>& points)
-  {
-    points_.reserve(points.size());
-    for(const auto& p : points)
-      points_.emplace_back(p.x(), p.y(), p.z());
-    map_ = Point_map(points_.data());
-    std::vector<std::size_t> ids(points_.size());
-    for(std::size_t i = 0; i < ids.size(); ++i)
-      ids[i] = i;
-    tree_.reset(new Tree(ids.begin(), ids.end(), Tree::Splitter(), Traits(map_)));
-    tree_->build();
-  }
+  explicit Point_neighbours(const std::vector<Eigen::Vector3d>& points);
 
   std::size_t size() const { return points_.size(); }
 
   // The k nearest points to q as (index, squared distance), nearest first;
   // ties are broken by index so that the result is deterministic.
-  std::vector<std::pair<std::size_t, double>> nearest(const Eigen::Vector3d& q, std::size_t k) const
-  {
-    std::vector<std::pair<std::size_t, double>> out;
-    if(points_.empty() || k == 0)
-      return out;
-    const Search search(*tree_, K::Point_3(q.x(), q.y(), q.z()), static_cast<unsigned int>(k), 0, true,
-                        Distance(map_));
-    for(const auto& n : search)
-      out.emplace_back(n.first, n.second);
-    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
-      return a.second < b.second || (a.second == b.second && a.first < b.first);
-    });
-    return out;
-  }
+  std::vector<std::pair<std::size_t, double>> nearest(const Eigen::Vector3d& q, std::size_t k) const;
 
 private:
   std::vector<K::Point_3> points_;
   Point_map map_;
   std::unique_ptr<Tree> tree_;
 };
+
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+SPECTRALSEG_INLINE Point_neighbours::Point_neighbours(const std::vector<Eigen::Vector3d>& points)
+{
+  points_.reserve(points.size());
+  for(const auto& p : points)
+    points_.emplace_back(p.x(), p.y(), p.z());
+  map_ = Point_map(points_.data());
+  std::vector<std::size_t> ids(points_.size());
+  for(std::size_t i = 0; i < ids.size(); ++i)
+    ids[i] = i;
+  tree_.reset(new Tree(ids.begin(), ids.end(), Tree::Splitter(), Traits(map_)));
+  tree_->build();
+}
+
+SPECTRALSEG_INLINE std::vector<std::pair<std::size_t, double>> Point_neighbours::nearest(const Eigen::Vector3d& q,
+                                                                                         std::size_t k) const
+{
+  std::vector<std::pair<std::size_t, double>> out;
+  if(points_.empty() || k == 0)
+    return out;
+  const Search search(*tree_, K::Point_3(q.x(), q.y(), q.z()), static_cast<unsigned int>(k), 0, true,
+                      Distance(map_));
+  for(const auto& n : search)
+    out.emplace_back(n.first, n.second);
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+    return a.second < b.second || (a.second == b.second && a.first < b.first);
+  });
+  return out;
+}
+#endif
 
 } // namespace internal
 } // namespace SpectralSeg

@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
 #include <SpectralSeg/IO/internal/Text_cursor.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -21,7 +22,8 @@ namespace internal {
 // OBJ statements that carry no polygon and are skipped: texture
 // coordinates, normals, grouping, materials, display attributes and the
 // free-form geometry statements.
-inline bool is_ignored_obj_statement(std::string_view keyword)
+SPECTRALSEG_INLINE bool is_ignored_obj_statement(std::string_view keyword)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   static const char* const ignored[] = {
     "vt", "vn", "vp", "g", "o", "s", "mg", "usemtl", "mtllib", "usemap", "maplib", "bevel", "c_interp",
@@ -29,11 +31,15 @@ inline bool is_ignored_obj_statement(std::string_view keyword)
     "curv2", "surf", "parm", "trim", "hole", "scrv", "sp", "end", "con", "call", "csh"};
   return std::any_of(std::begin(ignored), std::end(ignored), [&](const char* k) { return keyword == k; });
 }
+#else
+;
+#endif
 
 // The vertex of one `f` corner ("v", "v/vt", "v/vt/vn" or "v//vn"; 1-based,
 // negative counts back from the last vertex read), 0-based. Positive
 // indices may refer to vertices defined later; they are checked at the end.
-inline std::size_t obj_corner(Text_cursor& in, std::string_view token, std::size_t vertices_so_far)
+SPECTRALSEG_INLINE std::size_t obj_corner(Text_cursor& in, std::string_view token, std::size_t vertices_so_far)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::string_view index = token.substr(0, token.find('/'));
   std::int64_t v = 0;
@@ -46,12 +52,16 @@ inline std::size_t obj_corner(Text_cursor& in, std::string_view token, std::size
             " vertices so far; OBJ indices start at 1, negative ones count back from the last vertex)");
   return v > 0 ? std::size_t(v - 1) : vertices_so_far - std::size_t(-v);
 }
+#else
+;
+#endif
 
 /// Reads the `v` and `f` statements of an OBJ file; `l` (polyline) and `p`
 /// (point) elements are counted and ignored, as are texture coordinates,
 /// normals, groups, materials and free-form statements. An unknown
 /// statement is refused with its line.
-inline void read_obj(const File_bytes& file, Polygon_soup& soup)
+SPECTRALSEG_INLINE void read_obj(const File_bytes& file, Polygon_soup& soup)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Text_cursor in(file, 0, '#', true);
   std::size_t largest_index = 0, largest_index_line = 0; // forward references, checked at the end
@@ -110,6 +120,9 @@ inline void read_obj(const File_bytes& file, Polygon_soup& soup)
               "a face refers to vertex " + std::to_string(largest_index + 1) + " but the file has " +
                 std::to_string(soup.points.size()) + " vertices");
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond

@@ -8,6 +8,7 @@
 #include <SpectralSeg/IO/internal/Binary_cursor.h>
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
 #include <SpectralSeg/IO/internal/Text_cursor.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <cstdint>
 #include <string>
@@ -19,7 +20,8 @@ namespace IO {
 namespace internal {
 
 // The vertex `index` of face `face`, checked against the `vertices` of the file.
-inline std::size_t checked_vertex_index(Text_cursor& in, std::size_t face, std::size_t vertices)
+SPECTRALSEG_INLINE std::size_t checked_vertex_index(Text_cursor& in, std::size_t face, std::size_t vertices)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::uint64_t v = in.integer(Label("a vertex index of face", face), UINT64_MAX);
   if(v >= vertices)
@@ -27,9 +29,13 @@ inline std::size_t checked_vertex_index(Text_cursor& in, std::size_t face, std::
             std::to_string(vertices) + " vertices (numbered from 0)");
   return std::size_t(v);
 }
+#else
+;
+#endif
 
 // The vertex count of a face, checked against the limit and the bytes left.
-inline std::size_t checked_face_size(Text_cursor& in, std::size_t face)
+SPECTRALSEG_INLINE std::size_t checked_face_size(Text_cursor& in, std::size_t face)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::uint64_t n = in.integer(Label("the vertex count of face", face), UINT64_MAX);
   if(n > max_face_vertices)
@@ -37,6 +43,9 @@ inline std::size_t checked_face_size(Text_cursor& in, std::size_t face)
             std::to_string(max_face_vertices) + " vertices are refused (split the polygon)");
   return std::size_t(n);
 }
+#else
+;
+#endif
 
 // The keyword of an OFF file: `[ST][C][N][4][n]OFF [BINARY]`.
 struct Off_keyword
@@ -55,7 +64,8 @@ struct Off_keyword
 // count first). Counts are checked against the file's size before
 // anything is allocated, and faces of fewer than three vertices are
 // refused (a truncated file or a wrong count reads as empty faces).
-inline void read_binary_off(const File_bytes& file, std::size_t begin, const Off_keyword& k, Polygon_soup& soup)
+SPECTRALSEG_INLINE void read_binary_off(const File_bytes& file, std::size_t begin, const Off_keyword& k, Polygon_soup& soup)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Binary_cursor in(file, begin, true);
   if(k.colours || k.textures)
@@ -118,6 +128,9 @@ inline void read_binary_off(const File_bytes& file, std::size_t begin, const Off
     in.fail("unexpected data after the " + std::to_string(faces) +
             " faces the header announces (wrong counts in the header?)");
 }
+#else
+;
+#endif
 
 /// Reads OFF (the geomview format), ASCII or binary (`OFF BINARY`, see
 /// `read_binary_off()`): an optional `[ST][C][N][4][n]OFF`
@@ -125,7 +138,8 @@ inline void read_binary_off(const File_bytes& file, std::size_t begin, const Off
 /// first three numbers, or four homogeneous ones for `4OFF`; colours,
 /// normals and texture coordinates after them are skipped) and one face
 /// per line (a vertex count, that many 0-based indices, an optional colour).
-inline void read_off(const File_bytes& file, Polygon_soup& soup)
+SPECTRALSEG_INLINE void read_off(const File_bytes& file, Polygon_soup& soup)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Text_cursor in(file, 0, '#');
   const Text_cursor start = in;
@@ -208,6 +222,9 @@ inline void read_off(const File_bytes& file, Polygon_soup& soup)
     in.fail("unexpected " + quoted(extra) + " after the " + std::to_string(faces) +
             " faces the header announces (wrong counts in the header?)");
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond

@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
 #include <SpectralSeg/IO/internal/Text_cursor.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <cmath>
 #include <cstdint>
@@ -28,7 +29,8 @@ struct Ply_type
   bool is_signed = false;
 };
 
-inline bool ply_type_of(std::string_view name, Ply_type& t)
+SPECTRALSEG_INLINE bool ply_type_of(std::string_view name, Ply_type& t)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   struct Entry { const char* name; Ply_type type; };
   static const Entry types[] = {
@@ -46,6 +48,9 @@ inline bool ply_type_of(std::string_view name, Ply_type& t)
     }
   return false;
 }
+#else
+;
+#endif
 
 struct Ply_property
 {
@@ -90,7 +95,8 @@ struct Ply_header
   std::size_t data_line = 0;
 };
 
-inline Ply_header read_ply_header(const File_bytes& file)
+SPECTRALSEG_INLINE Ply_header read_ply_header(const File_bytes& file)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::string& d = file.data;
   if(d.compare(0, 3, "ply") != 0 || (d.size() > 3 && d[3] != '\n' && d[3] != '\r'))
@@ -208,6 +214,9 @@ inline Ply_header read_ply_header(const File_bytes& file)
                     std::to_string(available) + " bytes of data follow it (truncated file or wrong counts)");
   return h;
 }
+#else
+;
+#endif
 
 // Reads the values of a PLY body, ASCII or binary, one at a time.
 class Ply_values
@@ -368,7 +377,8 @@ private:
 /// (of any numeric type) and the `vertex_indices` (or `vertex_index`) list
 /// of the `face` element (any integer count and index types); other
 /// elements and properties are skipped.
-inline void read_ply(const File_bytes& file, Polygon_soup& soup)
+SPECTRALSEG_INLINE void read_ply(const File_bytes& file, Polygon_soup& soup)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const Ply_header h = read_ply_header(file);
   Ply_values in(file, h);
@@ -460,6 +470,9 @@ inline void read_ply(const File_bytes& file, Polygon_soup& soup)
         file.fail("", "face " + std::to_string(f) + " refers to vertex " + std::to_string(soup.face(f)[i]) +
                         " but the file has " + std::to_string(soup.points.size()) + " vertices (numbered from 0)");
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond

@@ -12,6 +12,7 @@
 #include <SpectralSeg/IO/internal/read_ply.h>
 #include <SpectralSeg/IO/internal/read_stl.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <cctype>
@@ -23,7 +24,8 @@ namespace IO {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-inline std::string lowercase_extension(const std::string& path)
+SPECTRALSEG_INLINE std::string lowercase_extension(const std::string& path)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t dot = path.find_last_of('.');
   const std::size_t slash = path.find_last_of("/\\");
@@ -33,11 +35,15 @@ inline std::string lowercase_extension(const std::string& path)
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
 }
+#else
+;
+#endif
 
 // The format of a mesh file by its extension ("off", "obj", "ply" or
 // "stl"); throws Io_error for another extension (after checking that the
 // file can be read: a missing file says so first).
-inline std::string mesh_file_format(const std::string& path)
+SPECTRALSEG_INLINE std::string mesh_file_format(const std::string& path)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::string ext = lowercase_extension(path);
   if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
@@ -47,10 +53,14 @@ inline std::string mesh_file_format(const std::string& path)
   }
   return ext;
 }
+#else
+;
+#endif
 
 // The points and faces of the bytes of a file of `format` (as
 // `mesh_file_format()` gives it), as the file gives them.
-inline Polygon_soup read_polygon_soup(const File_bytes& file, const std::string& format)
+SPECTRALSEG_INLINE Polygon_soup read_polygon_soup(const File_bytes& file, const std::string& format)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Polygon_soup soup;
   if(format == "off")
@@ -65,13 +75,20 @@ inline Polygon_soup read_polygon_soup(const File_bytes& file, const std::string&
     throw Io_error("'" + file.path + "': unknown mesh format '" + format + "' (use .off, .obj, .ply or .stl)");
   return soup;
 }
+#else
+;
+#endif
 
 // The points and faces of a file, as the file gives them, by format.
-inline Polygon_soup read_polygon_soup(const std::string& path)
+SPECTRALSEG_INLINE Polygon_soup read_polygon_soup(const std::string& path)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::string format = mesh_file_format(path);
   return read_polygon_soup(read_file_bytes(path), format);
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond

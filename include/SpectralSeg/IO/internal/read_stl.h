@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
 #include <SpectralSeg/IO/internal/Text_cursor.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <cmath>
 #include <cstdint>
@@ -21,7 +22,8 @@ namespace internal {
 
 // Binary STL: an 80-byte header, a little-endian 32-bit triangle count and
 // 50 bytes per triangle (normal, three corners as 32-bit floats, 2 bytes).
-inline std::uint64_t binary_stl_triangles(const File_bytes& file)
+SPECTRALSEG_INLINE std::uint64_t binary_stl_triangles(const File_bytes& file)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(file.data.size() < 84)
     return std::uint64_t(-1);
@@ -30,8 +32,12 @@ inline std::uint64_t binary_stl_triangles(const File_bytes& file)
     n |= std::uint64_t(static_cast<unsigned char>(file.data[std::size_t(80 + i)])) << (8 * i);
   return n;
 }
+#else
+;
+#endif
 
-inline void read_binary_stl(const File_bytes& file, Polygon_soup& soup)
+SPECTRALSEG_INLINE void read_binary_stl(const File_bytes& file, Polygon_soup& soup)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::uint64_t n = binary_stl_triangles(file);
   if(file.data.size() < 84)
@@ -68,11 +74,15 @@ inline void read_binary_stl(const File_bytes& file, Polygon_soup& soup)
     soup.end_face();
   }
 }
+#else
+;
+#endif
 
 // ASCII STL: solid NAME, facets of "facet normal ..." "outer loop" three or
 // more "vertex x y z" "endloop" "endfacet", "endsolid NAME"; several solids
 // may follow each other.
-inline void read_ascii_stl(const File_bytes& file, Polygon_soup& soup)
+SPECTRALSEG_INLINE void read_ascii_stl(const File_bytes& file, Polygon_soup& soup)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Text_cursor in(file, 0);
   auto keyword = [&in](const char* expected) {
@@ -119,12 +129,16 @@ inline void read_ascii_stl(const File_bytes& file, Polygon_soup& soup)
     }
   }
 }
+#else
+;
+#endif
 
 /// Reads an STL file. It is binary if its size is exactly that its
 /// binary header announces, or if it does not start with `solid`, or if it
 /// holds a NUL byte (binary files may start with `solid` too); ASCII
 /// otherwise. Every triangle has its own three corners (welded later).
-inline void read_stl(const File_bytes& file, Polygon_soup& soup)
+SPECTRALSEG_INLINE void read_stl(const File_bytes& file, Polygon_soup& soup)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const bool starts_solid = file.data.compare(0, 5, "solid") == 0;
   const std::uint64_t n = binary_stl_triangles(file);
@@ -135,6 +149,9 @@ inline void read_stl(const File_bytes& file, Polygon_soup& soup)
   else
     read_ascii_stl(file, soup);
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond

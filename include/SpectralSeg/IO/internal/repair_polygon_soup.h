@@ -10,6 +10,7 @@
 #include <SpectralSeg/IO/Mesh_file_report.h>
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <array>
@@ -26,7 +27,8 @@ namespace internal {
 // Merges the points with identical coordinates: returns, for each point of
 // the soup, its index among the merged points, which replace `points`. The
 // merged points keep the order of their first occurrence. O(n log n).
-inline std::vector<std::size_t> weld_identical_vertices(std::vector<std::array<double, 3>>& points)
+SPECTRALSEG_INLINE std::vector<std::size_t> weld_identical_vertices(std::vector<std::array<double, 3>>& points)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = points.size();
   std::vector<std::size_t> order(n);
@@ -55,6 +57,9 @@ inline std::vector<std::size_t> weld_identical_vertices(std::vector<std::array<d
     points.swap(unique);
   return weld;
 }
+#else
+;
+#endif
 
 // The triangles of the cleaned soup and where each face of the file went.
 struct Clean_triangles
@@ -184,7 +189,8 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
 }
 
 // The undirected edges of the triangles, (smaller, larger) vertex, sorted.
-inline std::vector<std::uint64_t> sorted_edge_keys(const std::vector<std::array<std::size_t, 3>>& triangles)
+SPECTRALSEG_INLINE std::vector<std::uint64_t> sorted_edge_keys(const std::vector<std::array<std::size_t, 3>>& triangles)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   std::vector<std::uint64_t> keys;
   keys.reserve(3 * triangles.size());
@@ -199,9 +205,13 @@ inline std::vector<std::uint64_t> sorted_edge_keys(const std::vector<std::array<
   std::sort(keys.begin(), keys.end());
   return keys;
 }
+#else
+;
+#endif
 
 // Edges of the triangles shared by more than two of them.
-inline std::size_t count_non_manifold_edges(const std::vector<std::array<std::size_t, 3>>& triangles)
+SPECTRALSEG_INLINE std::size_t count_non_manifold_edges(const std::vector<std::array<std::size_t, 3>>& triangles)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::vector<std::uint64_t> keys = sorted_edge_keys(triangles);
   std::size_t n = 0;
@@ -215,13 +225,17 @@ inline std::size_t count_non_manifold_edges(const std::vector<std::array<std::si
   }
   return n;
 }
+#else
+;
+#endif
 
 // True when the triangles already form a consistently oriented 2-manifold
 // (with or without boundary): no directed edge twice, and the triangles
 // around each vertex one fan. Then CGAL's orient_polygon_soup() has nothing
 // to do. O(n log d) for n triangles and vertex degrees up to d (a fan of a
 // million triangles around one vertex included); indices must fit 32 bits.
-inline bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<std::array<std::size_t, 3>>& triangles)
+SPECTRALSEG_INLINE bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<std::array<std::size_t, 3>>& triangles)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(vertices >= (std::size_t(1) << 32))
     return false;
@@ -294,6 +308,9 @@ inline bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<st
   }
   return true;
 }
+#else
+;
+#endif
 
 } // namespace internal
 /// \endcond

@@ -5,6 +5,8 @@
 #ifndef SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
 #define SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
 
+#include <SpectralSeg/internal/separate_compilation.h>
+
 #include <CGAL/Hilbert_sort_median_3.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
@@ -62,7 +64,8 @@ public:
 // positions (CGAL's median policy: the curve adapts to where the points are).
 // The keys themselves are sorted, not indices into them: the median splits
 // then read memory in sequence instead of jumping through an index array.
-inline std::vector<std::size_t> hilbert_order(std::vector<Spatial_order_key>& keys)
+SPECTRALSEG_INLINE std::vector<std::size_t> hilbert_order(std::vector<Spatial_order_key>& keys)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const CGAL::Hilbert_sort_median_3<Spatial_order_traits, CGAL::Sequential_tag> sort{Spatial_order_traits()};
   sort(keys.begin(), keys.end());
@@ -71,6 +74,9 @@ inline std::vector<std::size_t> hilbert_order(std::vector<Spatial_order_key>& ke
     order[i] = keys[i].index;
   return order;
 }
+#else
+;
+#endif
 
 // Reorders `items` along `order` (items[order[0]] first) and returns the new
 // index of each item.
