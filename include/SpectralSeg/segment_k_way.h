@@ -453,19 +453,12 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       internal::Stage_timer t(times[i], true);
       K_way_result& c = candidates[i];
       const std::size_t dimensions = specs[i].dimensions;
-      if(share)
-      {
-        // the candidate's leading rows, turned into affinities: the last
-        // candidate takes the rows themselves when it needs them all
-        const auto l = static_cast<Eigen::Index>(dimensions + 1);
-        Embedding::internal::Row_matrix w = i + 1 == specs.size() && l == shared.distances.rows()
-                                              ? std::move(shared.distances)
-                                              : Embedding::internal::Row_matrix(shared.distances.topRows(l));
-        const double width = Embedding::internal::distances_to_affinities(w, options.kernel, exec);
-        c.embedding = Embedding::internal::nystrom_embedding_from_affinities(
-          w, std::vector<Dual_graph::size_type>(shared.samples.begin(), shared.samples.begin() + l), width, dimensions,
-          exec);
-      }
+      if(share) // the candidate's leading rows, made into affinities one face at a time
+        c.embedding = Embedding::internal::nystrom_embedding_from_distances(
+          shared.distances,
+          std::vector<Dual_graph::size_type>(shared.samples.begin(),
+                                             shared.samples.begin() + static_cast<std::ptrdiff_t>(dimensions + 1)),
+          options.kernel, dimensions, exec);
       else
         c.embedding = internal::embed(graph, dimensions, options.kernel, eo, exec);
       if(i + 1 == specs.size())

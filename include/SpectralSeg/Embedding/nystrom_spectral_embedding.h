@@ -168,14 +168,14 @@ Nystrom_rows nystrom_rows(const Weighted_dual_graph& graph, std::size_t l, const
   return out;
 }
 
-// The Nyström embedding from the affinity rows `w` of `samples`.
-SPECTRALSEG_INLINE Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
-                                                                        std::vector<Dual_graph::size_type> samples,
-                                                                        double kernel_width, std::size_t dimensions,
-                                                                        const Execution& exec)
-#if SPECTRALSEG_DEFINE_FUNCTIONS
+// The Nyström embedding of `n` faces from the affinities of `samples`:
+// `column(f, a)` puts the affinities of face `f` to the samples in `a`
+// (one entry per sample). The affinities are asked for one face at a time,
+// so that no samples-by-faces matrix of them need exist.
+template <typename AffinityColumn>
+Spectral_embedding nystrom_extension(std::size_t n, std::vector<Dual_graph::size_type> samples, double kernel_width,
+                                     std::size_t dimensions, const Execution& exec, const AffinityColumn& column)
 {
-  const std::size_t n = static_cast<std::size_t>(w.cols());
   const std::size_t l = samples.size();
   Spectral_embedding out;
   out.exact = false;
@@ -184,10 +184,19 @@ SPECTRALSEG_INLINE Spectral_embedding nystrom_embedding_from_affinities(const Ro
 
   exec.report("eigen-solve", 0.);
   const Eigen::Index ll = static_cast<Eigen::Index>(l);
+  Eigen::MatrixXd at_samples(ll, ll); // column j: the affinities of sample j
+  {
+    Eigen::RowVectorXd affinities(ll);
+    for(Eigen::Index j = 0; j < ll; ++j)
+    {
+      column(out.samples[std::size_t(j)], affinities);
+      at_samples.col(j) = affinities.transpose();
+    }
+  }
   Eigen::MatrixXd a(ll, ll);
   for(Eigen::Index i = 0; i < ll; ++i)
     for(Eigen::Index j = 0; j < ll; ++j)
-      a(i, j) = 0.5 * (w(i, out.samples[std::size_t(j)]) + w(j, out.samples[std::size_t(i)]));
+      a(i, j) = 0.5 * (at_samples(i, j) + at_samples(j, i));
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
   if(eig.info() != Eigen::Success)
     throw Error("Nyström embedding: the eigen-solver did not converge on the sample affinities");
@@ -214,10 +223,11 @@ SPECTRALSEG_INLINE Spectral_embedding nystrom_embedding_from_affinities(const Ro
   out.coordinates.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(kept.size()));
   const std::size_t block = 1024; // faces per task, sharing one row buffer
   ::SpectralSeg::internal::parallel_range(0, (n + block - 1) / block, exec.threads(), [&](std::size_t b) {
-    Eigen::RowVectorXd extended(ll);
+    Eigen::RowVectorXd affinities(ll), extended(ll);
     for(std::size_t f = b * block; f < std::min(n, (b + 1) * block); ++f)
     {
-      extended.noalias() = w.col(Eigen::Index(f)).transpose() * e_scaled;
+      column(static_cast<Dual_graph::size_type>(f), affinities);
+      extended.noalias() = affinities * e_scaled;
       for(std::size_t i = 0; i < kept.size(); ++i)
         out.coordinates(Eigen::Index(f), Eigen::Index(i)) = extended(kept[i]) * scale(Eigen::Index(i));
       if(!sampled[f])
@@ -233,9 +243,43 @@ SPECTRALSEG_INLINE Spectral_embedding nystrom_embedding_from_affinities(const Ro
   exec.report("eigen-solve", 1.);
   return out;
 }
+
+// The Nyström embedding from the affinity rows `w` of `samples`.
+SPECTRALSEG_INLINE Spectral_embedding nystrom_embedding_from_affinities(const Row_matrix& w,
+                                                                        std::vector<Dual_graph::size_type> samples,
+                                                                        double kernel_width, std::size_t dimensions,
+                                                                        const Execution& exec)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+{
+  return nystrom_extension(static_cast<std::size_t>(w.cols()), std::move(samples), kernel_width, dimensions, exec,
+                           [&w](Dual_graph::size_type f, Eigen::RowVectorXd& a) { a = w.col(Eigen::Index(f)).transpose(); });
+}
 #else
 ;
 #endif
+
+// The Nyström embedding from the first `samples.size()` rows of
+// `distances`, the distance rows of `samples` (and maybe of more samples
+// after them): the same embedding as distances_to_affinities() on a copy
+// of those rows, then nystrom_embedding_from_affinities(), without the
+// copy. The kernel width comes from those rows.
+template <typename Kernel>
+Spectral_embedding nystrom_embedding_from_distances(const Row_matrix& distances,
+                                                    std::vector<Dual_graph::size_type> samples, const Kernel& kernel,
+                                                    std::size_t dimensions, const Execution& exec)
+{
+  const Eigen::Index l = static_cast<Eigen::Index>(samples.size());
+  const double mean = mean_finite(distances, l);
+  const double width = mean > 0 ? kernel.width(mean) : 1.;
+  return nystrom_extension(static_cast<std::size_t>(distances.cols()), std::move(samples), width, dimensions, exec,
+                           [&](Dual_graph::size_type f, Eigen::RowVectorXd& a) {
+                             for(Eigen::Index i = 0; i < l; ++i)
+                             {
+                               const double d = distances(i, Eigen::Index(f));
+                               a(i) = std::isfinite(d) ? kernel(d, width) : 0.;
+                             }
+                           });
+}
 
 } // namespace internal
 /// \endcond

@@ -17,13 +17,14 @@ namespace internal {
 
 typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
 
-// Mean of the finite entries (distances to other components are infinite).
-SPECTRALSEG_INLINE double mean_finite(const Row_matrix& g)
+// Mean of the finite entries of the first `rows` rows (distances to other
+// components are infinite).
+SPECTRALSEG_INLINE double mean_finite(const Row_matrix& g, Eigen::Index rows)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   double sum = 0.;
   std::size_t count = 0;
-  for(Eigen::Index i = 0; i < g.rows(); ++i)
+  for(Eigen::Index i = 0; i < rows; ++i)
   {
     double row = 0.;
     for(Eigen::Index j = 0; j < g.cols(); ++j)
@@ -44,7 +45,7 @@ SPECTRALSEG_INLINE double mean_finite(const Row_matrix& g)
 template <typename Kernel>
 double distances_to_affinities(Row_matrix& g, const Kernel& kernel, const Execution& exec)
 {
-  const double mean = mean_finite(g);
+  const double mean = mean_finite(g, g.rows());
   const double width = mean > 0 ? kernel.width(mean) : 1.;
   ::SpectralSeg::internal::parallel_range(0, static_cast<std::size_t>(g.rows()), exec.threads(), [&](std::size_t i) {
     for(Eigen::Index j = 0; j < g.cols(); ++j)
