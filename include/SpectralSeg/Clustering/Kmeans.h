@@ -85,10 +85,11 @@ SPECTRALSEG_INLINE std::vector<std::size_t> max_min_seeds(const Eigen::MatrixXd&
 namespace internal {
 
 // Lloyd's rounds on n points of `dims` coordinates, point i's at
-// p[i * step], ..., p[i * step + dims - 1], from the centroids in
-// `r.centroids`; sets r.labels, r.iterations and r.converged.
-SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t step, Kmeans_result& r,
-                              std::size_t max_iterations, const Execution& exec)
+// p[i * step + j * coordinate_step] for j = 0, ..., dims - 1, from the
+// centroids in `r.centroids`; sets r.labels, r.iterations and r.converged.
+SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, std::size_t step,
+                              std::size_t coordinate_step, Kmeans_result& r, std::size_t max_iterations,
+                              const Execution& exec)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t kk = static_cast<std::size_t>(r.centroids.rows());
@@ -98,16 +99,18 @@ SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, 
   std::vector<double> centre(kk * dims), across(kk * dims);
   constexpr std::size_t block_centroids = 64;
   std::vector<char> changed(n, 0);
-  const auto squared_distance = [dims](const double* x, const double* y) {
+  // x's coordinates `x_step` apart, y's next to each other
+  const auto squared_distance = [dims](const double* x, const double* y, std::size_t x_step = 1) {
     double d = 0.;
     if(dims > 0)
     {
       d = (x[0] - y[0]) * (x[0] - y[0]);
       for(std::size_t j = 1; j < dims; ++j)
-        d += (x[j] - y[j]) * (x[j] - y[j]);
+        d += (x[j * x_step] - y[j]) * (x[j * x_step] - y[j]);
     }
     return d;
   };
+  const std::size_t cs = coordinate_step;
   // Hamerly's bounds: an upper bound of each point's distance to its
   // centroid and a lower bound of its distance to every other one; a point
   // whose upper bound is below both its lower bound and half the distance
@@ -148,7 +151,7 @@ SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, 
           changed[i] = 0;
           return;
         }
-        upper[i] = std::sqrt(squared_distance(x, centre.data() + std::size_t(own) * dims));
+        upper[i] = std::sqrt(squared_distance(x, centre.data() + std::size_t(own) * dims, cs));
         if(upper[i] * margin < bound)
         {
           changed[i] = 0;
@@ -172,7 +175,7 @@ SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, 
         for(std::size_t j = 1; j < dims; ++j)
         {
           t = across.data() + j * kk;
-          const double xj = x[j];
+          const double xj = x[j * cs];
           for(std::size_t c = 0; c < kk; ++c)
           {
             const double e = xj - t[c];
@@ -184,7 +187,7 @@ SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, 
       double best_d = std::numeric_limits<double>::infinity(), second_d = std::numeric_limits<double>::infinity();
       for(std::size_t c = 0; c < kk; ++c)
       {
-        const double d = blocked ? near[c] : squared_distance(x, centre.data() + c * dims);
+        const double d = blocked ? near[c] : squared_distance(x, centre.data() + c * dims, cs);
         if(d < best_d)
         {
           second_d = best_d;
@@ -231,7 +234,7 @@ SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, 
       {
         const std::size_t c = std::size_t(r.labels[i]);
         for(std::size_t j = 0; j < dims; ++j)
-          s[c * dims + j] += p[i * step + j];
+          s[c * dims + j] += p[i * step + j * cs];
         ++m[c];
       }
     });
@@ -308,20 +311,16 @@ SPECTRALSEG_INLINE Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size
   r.centroids.resize(static_cast<Eigen::Index>(kk), points.cols());
   for(std::size_t c = 0; c < kk; ++c)
     r.centroids.row(Eigen::Index(c)) = points.row(Eigen::Index(seeds[c]));
-  // points stored point after point, distances summed in coordinate order:
-  // the same sums as Eigen's, several times faster
+  // the coordinates read in place (column after column, no copy: 120 MB
+  // at 832,000 faces), distances summed in coordinate order
   const std::size_t dims = static_cast<std::size_t>(points.cols());
-  std::vector<double> p(n * dims);
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t j = 0; j < dims; ++j)
-      p[i * dims + j] = points(Eigen::Index(i), Eigen::Index(j));
   if(sample_limit > 0 && n > sample_limit)
   {
-    // every stride-th point, read in place
+    // every stride-th point
     const std::size_t stride = (n + sample_limit - 1) / sample_limit;
-    internal::lloyd(p.data(), (n + stride - 1) / stride, dims, stride * dims, r, max_iterations, exec);
+    internal::lloyd(points.data(), (n + stride - 1) / stride, dims, stride, n, r, max_iterations, exec);
   }
-  internal::lloyd(p.data(), n, dims, dims, r, max_iterations, exec);
+  internal::lloyd(points.data(), n, dims, 1, n, r, max_iterations, exec);
   return r;
 }
 #else
