@@ -269,15 +269,11 @@ Spectral_embedding nystrom_embedding_from_distances(const Row_matrix& distances,
                                                     std::size_t dimensions, const Execution& exec)
 {
   const Eigen::Index l = static_cast<Eigen::Index>(samples.size());
-  const double mean = mean_finite(distances, l);
-  const double width = mean > 0 ? kernel.width(mean) : 1.;
+  const double width = kernel_width(distances, l, kernel);
   return nystrom_extension(static_cast<std::size_t>(distances.cols()), std::move(samples), width, dimensions, exec,
                            [&](Dual_graph::size_type f, Eigen::RowVectorXd& a) {
                              for(Eigen::Index i = 0; i < l; ++i)
-                             {
-                               const double d = distances(i, Eigen::Index(f));
-                               a(i) = std::isfinite(d) ? kernel(d, width) : 0.;
-                             }
+                               a(i) = affinity(distances(i, Eigen::Index(f)), kernel, width);
                            });
 }
 

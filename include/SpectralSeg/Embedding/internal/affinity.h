@@ -41,15 +41,30 @@ SPECTRALSEG_INLINE double mean_finite(const Row_matrix& g, Eigen::Index rows)
 ;
 #endif
 
+// The kernel width of the first `rows` distance rows of `g`: from the mean
+// of their finite entries (1 when there is none, or it is 0).
+template <typename Kernel>
+double kernel_width(const Row_matrix& g, Eigen::Index rows, const Kernel& kernel)
+{
+  const double mean = mean_finite(g, rows);
+  return mean > 0 ? kernel.width(mean) : 1.;
+}
+
+// The affinity of a distance: 0 across components (an infinite distance).
+template <typename Kernel>
+double affinity(double distance, const Kernel& kernel, double width)
+{
+  return std::isfinite(distance) ? kernel(distance, width) : 0.;
+}
+
 // Turns distances into affinities in place; returns the kernel width.
 template <typename Kernel>
 double distances_to_affinities(Row_matrix& g, const Kernel& kernel, const Execution& exec)
 {
-  const double mean = mean_finite(g, g.rows());
-  const double width = mean > 0 ? kernel.width(mean) : 1.;
+  const double width = kernel_width(g, g.rows(), kernel);
   ::SpectralSeg::internal::parallel_range(0, static_cast<std::size_t>(g.rows()), exec.threads(), [&](std::size_t i) {
     for(Eigen::Index j = 0; j < g.cols(); ++j)
-      g(Eigen::Index(i), j) = std::isfinite(g(Eigen::Index(i), j)) ? kernel(g(Eigen::Index(i), j), width) : 0.;
+      g(Eigen::Index(i), j) = affinity(g(Eigen::Index(i), j), kernel, width);
   });
   return width;
 }
