@@ -48,6 +48,7 @@
 //   --extra-clusters N  K-means clusters beyond k, merged back (default 3; 0 = thesis)
 //   --alternative-extra-clusters A,B  also tried, the lowest concave normalized cut kept (default: the library's; none: only --extra-clusters)
 //   --contrast-merge-clusters N  the k-way's contrast-merge candidate's clusters (default 20; 0: none)
+//   --min-candidate-clusters N  k-way's candidates of fewer clusters are not tried (default 6; 0: all)
 //   --cut-angle-scale S  concavity scale (radians) of that normalized cut (default 0.1)
 //   --seed S       start face of the Nyström sampling
 //   --thesis       the thesis's k-way method (K_way_options::thesis(): no extra clusters, its graph cut,
@@ -126,6 +127,7 @@ struct Options
   std::size_t samples = 0;
   int extra_clusters = -1;
   int contrast_merge_clusters = -1; // < 0: the default
+  int min_candidate_clusters = -1;  // < 0: the default
   std::string alternative_extra_clusters = "-"; // "-": the default; "": none
   double cut_angle_scale = -1;
   double auto_contrast = 3;
@@ -320,6 +322,8 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   }
   if(o.contrast_merge_clusters >= 0)
     ko.contrast_merge_clusters = std::size_t(o.contrast_merge_clusters);
+  if(o.min_candidate_clusters >= 0)
+    ko.min_candidate_clusters = std::size_t(o.min_candidate_clusters);
   if(o.cut_angle_scale > 0)
     ko.cut_angle_scale = o.cut_angle_scale;
   ko.embedding.samples = o.samples_factor > 0 ? static_cast<std::size_t>(o.samples_factor * double(k)) + 1 : o.samples;
@@ -615,6 +619,8 @@ int run(int argc, char** argv)
       o.extra_clusters = std::stoi(next());
     else if(a == "--contrast-merge-clusters")
       o.contrast_merge_clusters = std::stoi(next());
+    else if(a == "--min-candidate-clusters")
+      o.min_candidate_clusters = std::stoi(next());
     else if(a == "--alternative-extra-clusters")
     {
       o.alternative_extra_clusters = next();

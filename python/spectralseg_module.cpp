@@ -564,8 +564,8 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
                               const std::string& sampling, long long samples, long long seed,
                               bool boundary_enhancement, long long extra_clusters,
                               const std::vector<long long>& alternative_extra_clusters,
-                              long long contrast_merge_clusters, long long threads,
-                              const py::object& progress, bool report, bool connect_touching_parts,
+                              long long contrast_merge_clusters, long long min_candidate_clusters,
+                              long long threads, const py::object& progress, bool report, bool connect_touching_parts,
                               double contact_distance, double speck_area_fraction)
 {
   const Soup soup = soup_from_arrays(vertices, faces);
@@ -577,6 +577,7 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
   for(long long e : alternative_extra_clusters)
     ks.options.alternative_extra_clusters.push_back(count("alternative_extra_clusters", e, 0, 1000));
   ks.options.contrast_merge_clusters = count("contrast_merge_clusters", contrast_merge_clusters, 0, 1000);
+  ks.options.min_candidate_clusters = count("min_candidate_clusters", min_candidate_clusters, 0, 1000);
   const unsigned t = static_cast<unsigned>(count("threads", threads, 0, 4096));
   Progress_bridge bridge(progress);
   struct Out
@@ -1033,6 +1034,8 @@ malformed file, InvalidInputError for a face that is not a triangle.)doc");
         py::arg("alternative_extra_clusters") = default_alternative_extra_clusters(),
         py::arg("contrast_merge_clusters") =
           static_cast<long long>(SpectralSeg::K_way_options().contrast_merge_clusters),
+        py::arg("min_candidate_clusters") =
+          static_cast<long long>(SpectralSeg::K_way_options().min_candidate_clusters),
         py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("report") = false,
         py::arg("connect_touching_parts") = true, py::arg("contact_distance") = 0.005,
         py::arg("speck_area_fraction") = 0.01,
@@ -1054,6 +1057,10 @@ contrast_merge_clusters: one more segmentation to choose from in the same
     down to k as the default automatic method does (default 20); 0: not
     tried. extra_clusters=0, alternative_extra_clusters=[] and
     contrast_merge_clusters=0 give the thesis's method
+min_candidate_clusters: of the segmentations of extra_clusters and
+    alternative_extra_clusters, those of fewer K-means clusters (k + extra)
+    are not tried when others are (default 6: with k = 2 or 3, k + 2
+    clusters cut the largest body in pieces); 0: all are tried
 )doc") + segmentation_method_doc)
           .c_str());
 

@@ -291,6 +291,11 @@ run_cli_json(extra_clusters 2 segment ${WORK}/quads.off --k 2 --alternative-extr
              --labels ${WORK}/q.seg --json -)
 run_cli_json(merge concave segment ${WORK}/quads.off --k 2 --alternative-extra-clusters none --contrast-merge-clusters 0
              --labels ${WORK}/q.seg --json -)
+# k + 2 = 4 clusters are fewer than --min-candidate-clusters (6): only k + 8 is tried
+run_cli_json(extra_clusters 8 segment ${WORK}/quads.off --k 2 --contrast-merge-clusters 0 --labels ${WORK}/q.seg
+             --json -)
+run_cli_json(extra_clusters 2 segment ${WORK}/quads.off --k 2 --contrast-merge-clusters 0 --alternative-extra-clusters 3
+             --min-candidate-clusters 0 --labels ${WORK}/q.seg --json -)
 run_cli_json("scores;rand_index_error" 0.0 eval --mesh ${WORK}/quads.off ${WORK}/q.seg ${WORK}/q.seg --json -)
 run_cli(0 "labels: .*q.seg" segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --json -)
 
@@ -315,6 +320,8 @@ run_cli(2 "error: --extra-clusters cannot be used here" segment ${WORK}/quads.of
         --labels ${WORK}/q.seg)
 run_cli(2 "error: --contrast-merge-clusters cannot be used here" segment ${WORK}/quads.off --k auto
         --contrast-merge-clusters 5 --labels ${WORK}/q.seg)
+run_cli(2 "error: --min-candidate-clusters cannot be used here" segment ${WORK}/quads.off --k auto
+        --min-candidate-clusters 3 --labels ${WORK}/q.seg)
 run_cli(2 "error: --graph-cut-backend cannot be used here" segment ${WORK}/quads.off --k 2 --no-graph-cut
         --graph-cut-backend boost-csr --labels ${WORK}/q.seg)
 run_cli(2 "error: --binary cannot be used here" segment ${WORK}/quads.off --k 2 --binary --mesh ${WORK}/q.off

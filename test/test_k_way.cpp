@@ -1322,6 +1322,7 @@ TEST_CASE("k-way with alternative extra clusters keeps the result with the lower
     both.extra_clusters = 0;
     both.alternative_extra_clusters = {6, 0, 6}; // repeats are tried once
     both.contrast_merge_clusters = 0;
+    both.min_candidate_clusters = 0; // k + 0 clusters tried too
     const K_way_result a = segment_k_way(s.weighted, k, few), b = segment_k_way(s.weighted, k, many);
     const K_way_result c = segment_k_way(s.weighted, k, both);
     CHECK(a.extra_clusters == 0);
@@ -1355,6 +1356,60 @@ TEST_CASE("k-way with alternative extra clusters keeps the result with the lower
       CHECK(stages.insert(t.first).second);
     CHECK(stages.count("choice") == 1);
   }
+}
+
+TEST_CASE("k-way leaves out the candidates of too few clusters while others are tried", "[k_way][choice]")
+{
+  const Star& s = star();
+  CHECK(K_way_options().min_candidate_clusters == 6);
+  const auto alone = [&](std::size_t k, std::size_t extra) {
+    K_way_options o;
+    o.extra_clusters = extra;
+    o.alternative_extra_clusters.clear();
+    o.contrast_merge_clusters = 0;
+    return segment_k_way(s.weighted, k, o);
+  };
+  K_way_options o;
+  o.contrast_merge_clusters = 0; // extra clusters 2 and 8
+  for(std::size_t k : {2, 3})
+  {
+    INFO("k " << k);
+    // k + 2 clusters are fewer than 6: only k + 8 is tried
+    const K_way_result r = segment_k_way(s.weighted, k, o), eight = alone(k, 8);
+    CHECK(r.extra_clusters == 8);
+    CHECK(r.labels == eight.labels);
+    // with the filter off, the choice between both
+    K_way_options all = o;
+    all.min_candidate_clusters = 0;
+    const K_way_result both = segment_k_way(s.weighted, k, all), two = alone(k, 2);
+    const double n2 = Refinement::concave_normalized_cut(s.graph, two.labels, o.cut_angle_scale);
+    const double n8 = Refinement::concave_normalized_cut(s.graph, eight.labels, o.cut_angle_scale);
+    CHECK(both.labels == (n8 < n2 ? eight.labels : two.labels));
+    CHECK(r.normalized_cut == Approx(n8)); // reported as after a choice
+    CHECK(eight.normalized_cut == 0.);     // none asked for
+  }
+  // from k = 4 on, k + 2 clusters are enough: both candidates are tried
+  K_way_options all = o;
+  all.min_candidate_clusters = 0;
+  const K_way_result four = segment_k_way(s.weighted, 4, o);
+  CHECK(four.labels == segment_k_way(s.weighted, 4, all).labels);
+  CHECK(four.normalized_cut > 0.);
+  // every candidate too small: the one of the most clusters stays, with the
+  // contrast merge still tried beside it
+  K_way_options tiny;
+  tiny.extra_clusters = 0;
+  tiny.alternative_extra_clusters = {1};
+  tiny.min_candidate_clusters = 100;
+  tiny.contrast_merge_clusters = 0;
+  const K_way_result one = segment_k_way(s.weighted, 3, tiny);
+  CHECK(one.extra_clusters == 1);
+  CHECK(one.labels == alone(3, 1).labels);
+  tiny.contrast_merge_clusters = 20;
+  K_way_options kept = tiny;
+  kept.alternative_extra_clusters.clear();
+  kept.extra_clusters = 1;
+  kept.min_candidate_clusters = 0;
+  CHECK(segment_k_way(s.weighted, 3, tiny).labels == segment_k_way(s.weighted, 3, kept).labels);
 }
 
 TEST_CASE("k-way tries the contrast merge cut at k and keeps it when its concave normalized cut is lower",

@@ -73,6 +73,17 @@ struct Basic_K_way_options
   /// creases. Default {8}: two over-segmentations, 2 and 8 extra clusters.
   /// Empty: `extra_clusters` only, at the cost of one segmentation.
   std::vector<std::size_t> alternative_extra_clusters{8};
+  /// with several over-segmentations to choose from (our addition): those
+  /// of `extra_clusters` and `alternative_extra_clusters` that make fewer
+  /// than this many K-means clusters (\f$k\f$ + extra) are not tried,
+  /// unless none would be left (then the one of the most clusters is).
+  /// With \f$k\f$ 2 or 3, \f$k\f$ + 2 clusters are too few to give a
+  /// part its own: they divide the largest body by its extent (a cube
+  /// into halves under its peg, a cup's wall lengthwise), and the
+  /// normalized cut, which favours segments of similar size, then keeps
+  /// that candidate. Default 6 (\f$k\f$ + 2 is tried from \f$k\f$ = 4
+  /// on); 0: every candidate is tried
+  std::size_t min_candidate_clusters = 6;
   /// the contrast merge as one more over-segmentation to choose from (our
   /// addition): when positive, the mesh is also over-segmented into this
   /// many K-means clusters (at least `k`), split along concave creases and
@@ -162,6 +173,7 @@ struct Basic_K_way_options
     o.seed_with_samples = seed_with_samples;
     o.extra_clusters = extra_clusters;
     o.alternative_extra_clusters = alternative_extra_clusters;
+    o.min_candidate_clusters = min_candidate_clusters;
     o.contrast_merge_clusters = contrast_merge_clusters;
     o.cut_angle_scale = cut_angle_scale;
     o.merge_strength_limit = merge_strength_limit;

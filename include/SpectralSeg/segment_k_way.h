@@ -309,8 +309,10 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 ///
 /// With `options.alternative_extra_clusters` ({8} by default, empty for
 /// the thesis's method), steps 1-5 are also run with each of those numbers
-/// of extra clusters; with `options.contrast_merge_clusters` (20 by
-/// default, 0 for the thesis's method) the mesh is also over-segmented into
+/// of extra clusters (where several candidates are tried, those of fewer
+/// than `options.min_candidate_clusters` clusters are left out); with
+/// `options.contrast_merge_clusters` (20 by default, 0 for the thesis's
+/// method) the mesh is also over-segmented into
 /// that many clusters (at least \f$k\f$) and merged down to \f$k\f$ by
 /// contrast as in `segment_hybrid()`, then cut (steps 4-5). Of all these
 /// candidates the one with the lowest
@@ -373,14 +375,31 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   for(std::size_t e : options.alternative_extra_clusters)
     if(std::find(extras.begin(), extras.end(), e) == extras.end())
       extras.push_back(e);
+  // with several candidates, those of too few clusters are left out (the
+  // one of the most clusters stays if all of them would go)
+  const bool choice = extras.size() > 1 || options.contrast_merge_clusters > 0;
+  if(choice)
+  {
+    const auto most = std::max_element(extras.begin(), extras.end(), [&](std::size_t a, std::size_t b) {
+      return clusters_of(a) < clusters_of(b);
+    });
+    const std::size_t fallback = *most;
+    extras.erase(std::remove_if(extras.begin(), extras.end(),
+                                [&](std::size_t e) { return clusters_of(e) < options.min_candidate_clusters; }),
+                 extras.end());
+    if(extras.empty())
+      extras.push_back(fallback);
+  }
   if(extras.size() == 1 && options.contrast_merge_clusters == 0)
   {
-    r.embedding = internal::embed(graph, dimensions_of(options.extra_clusters), options.kernel, options.embedding, exec);
+    r.embedding = internal::embed(graph, dimensions_of(extras.front()), options.kernel, options.embedding, exec);
     lap("embedding");
-    internal::kmeans_clusters(clusters_of(options.extra_clusters), options, r, lap, exec);
-    internal::refine_clusters(graph, clusters_of(options.extra_clusters), k, options, r, lap, exec, nullptr,
+    internal::kmeans_clusters(clusters_of(extras.front()), options, r, lap, exec);
+    internal::refine_clusters(graph, clusters_of(extras.front()), k, options, r, lap, exec, nullptr,
                               !options.keep_embedding_coordinates);
-    r.extra_clusters = clusters_of(options.extra_clusters) - k;
+    r.extra_clusters = clusters_of(extras.front()) - k;
+    if(choice) // the others left out: the kept one's value, as with a choice
+      r.normalized_cut = Refinement::concave_normalized_cut(graph.graph(), r.labels, options.cut_angle_scale);
     return r;
   }
 

@@ -250,6 +250,8 @@ class SameAsCommandLine(unittest.TestCase):
         self.check(labels, ["--k", "4", "--extra-clusters", "1", "--alternative-extra-clusters", "5,3"])
         labels = spectralseg.k_way_segmentation(v, f, 4, contrast_merge_clusters=0)
         self.check(labels, ["--k", "4", "--contrast-merge-clusters", "0"])
+        labels = spectralseg.k_way_segmentation(v, f, 3, min_candidate_clusters=0)
+        self.check(labels, ["--k", "3", "--min-candidate-clusters", "0"])
 
     def test_automatic(self):
         v, f = Mesh.get()

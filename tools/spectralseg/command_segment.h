@@ -43,6 +43,7 @@ struct Segment_options
   std::size_t extra_clusters = 0;
   std::vector<std::size_t> alternative_extra_clusters;
   std::size_t contrast_merge_clusters = 0;
+  std::size_t min_candidate_clusters = 0;
   std::string graph_cut = "banded";
   double crease_angle = 0.;
   double merge_size_exponent = 0.;
@@ -146,6 +147,12 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
                   "tried")
     ->capture_default_str()
     ->check(Count(0, max_clusters));
+  cmd->add_option("--min-candidate-clusters", o.min_candidate_clusters,
+                  "of the segmentations of --extra-clusters and --alternative-extra-clusters, those of fewer "
+                  "K-means clusters than this (k + extra) are not tried when others are (with k = 2 or 3, k + 2 "
+                  "clusters cut the largest body in pieces rather than find its parts); 0: all are tried")
+    ->capture_default_str()
+    ->check(Count(0, max_clusters));
   add_salient_cut_options(*cmd, o.salient);
 }
 
@@ -187,13 +194,14 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
   if(salient)
     ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--kernel", "--sampling",
              "--samples", "--seed", "--no-graph-cut", "--graph-cut", "--crease-angle", "--graph-cut-backend",
-             "--extra-clusters", "--alternative-extra-clusters", "--contrast-merge-clusters", "--max-k",
-             "--min-boundary-contrast"},
+             "--extra-clusters", "--alternative-extra-clusters", "--contrast-merge-clusters",
+             "--min-candidate-clusters", "--max-k", "--min-boundary-contrast"},
             "--auto-method salient-cuts uses none of the k-way options");
   else
   {
     if(automatic)
-      ignored({"--extra-clusters", "--alternative-extra-clusters", "--contrast-merge-clusters"},
+      ignored({"--extra-clusters", "--alternative-extra-clusters", "--contrast-merge-clusters",
+               "--min-candidate-clusters"},
               "--k auto over-segments into --max-k clusters itself");
     if(o.sampling == "exact")
       ignored({"--samples", "--seed"}, "it sets the Nyström sampling, and --sampling exact takes no samples");

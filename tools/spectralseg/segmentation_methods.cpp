@@ -41,6 +41,7 @@ Segment_options::Segment_options()
   extra_clusters = k_way.extra_clusters;
   alternative_extra_clusters = k_way.alternative_extra_clusters;
   contrast_merge_clusters = k_way.contrast_merge_clusters;
+  min_candidate_clusters = k_way.min_candidate_clusters;
   crease_angle = k_way.crease_angle;
   merge_size_exponent = k_way.merge_size_exponent;
   merge_separation = k_way.merge_separation_scale;
@@ -215,6 +216,7 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
   options.extra_clusters = o.extra_clusters;
   options.alternative_extra_clusters = o.alternative_extra_clusters;
   options.contrast_merge_clusters = o.contrast_merge_clusters;
+  options.min_candidate_clusters = o.min_candidate_clusters;
   options.boundary_enhancement = !o.no_graph_cut;
   if(o.graph_cut == "thesis")
     options.graph_cut = SpectralSeg::Refinement::Graph_cut_options();
