@@ -322,6 +322,8 @@ run_cli(2 "error: --contrast-merge-clusters cannot be used here" segment ${WORK}
         --contrast-merge-clusters 5 --labels ${WORK}/q.seg)
 run_cli(2 "error: --min-candidate-clusters cannot be used here" segment ${WORK}/quads.off --k auto
         --min-candidate-clusters 3 --labels ${WORK}/q.seg)
+run_cli(2 "error: --min-candidate-clusters cannot be used here: .*leave one" segment ${WORK}/quads.off --k 2
+        --alternative-extra-clusters none --contrast-merge-clusters 0 --min-candidate-clusters 3 --labels ${WORK}/q.seg)
 run_cli(2 "error: --graph-cut-backend cannot be used here" segment ${WORK}/quads.off --k 2 --no-graph-cut
         --graph-cut-backend boost-csr --labels ${WORK}/q.seg)
 run_cli(2 "error: --binary cannot be used here" segment ${WORK}/quads.off --k 2 --binary --mesh ${WORK}/q.off

@@ -207,6 +207,9 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
       ignored({"--samples", "--seed"}, "it sets the Nyström sampling, and --sampling exact takes no samples");
     if(o.no_graph_cut)
       ignored({"--graph-cut-backend", "--graph-cut"}, "--no-graph-cut skips the graph cut");
+    if(!automatic && o.alternative_extra_clusters.empty() && o.contrast_merge_clusters == 0)
+      ignored({"--min-candidate-clusters"}, "it chooses which segmentations to try, and --alternative-extra-clusters "
+                                            "none --contrast-merge-clusters 0 leave one");
     for(const std::string& m : inapplicable_metric_options(cmd, o.metric))
       w.push_back(m);
   }
