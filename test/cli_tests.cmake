@@ -324,6 +324,9 @@ run_cli(2 "error: --min-candidate-clusters cannot be used here" segment ${WORK}/
         --min-candidate-clusters 3 --labels ${WORK}/q.seg)
 run_cli(2 "error: --min-candidate-clusters cannot be used here: .*leave one" segment ${WORK}/quads.off --k 2
         --alternative-extra-clusters none --contrast-merge-clusters 0 --min-candidate-clusters 3 --labels ${WORK}/q.seg)
+run_cli(2 "error: --min-candidate-clusters cannot be used here: .*leave one" segment ${WORK}/quads.off --k 2
+        --extra-clusters 8 --alternative-extra-clusters 8 --contrast-merge-clusters 0 --min-candidate-clusters 3
+        --labels ${WORK}/q.seg)
 run_cli(2 "error: --graph-cut-backend cannot be used here" segment ${WORK}/quads.off --k 2 --no-graph-cut
         --graph-cut-backend boost-csr --labels ${WORK}/q.seg)
 run_cli(2 "error: --binary cannot be used here" segment ${WORK}/quads.off --k 2 --binary --mesh ${WORK}/q.off

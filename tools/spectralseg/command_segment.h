@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -207,9 +208,13 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
       ignored({"--samples", "--seed"}, "it sets the Nyström sampling, and --sampling exact takes no samples");
     if(o.no_graph_cut)
       ignored({"--graph-cut-backend", "--graph-cut"}, "--no-graph-cut skips the graph cut");
-    if(!automatic && o.alternative_extra_clusters.empty() && o.contrast_merge_clusters == 0)
+    // one segmentation left: no alternative other than --extra-clusters itself, no contrast merge
+    if(!automatic && o.contrast_merge_clusters == 0 &&
+       std::all_of(o.alternative_extra_clusters.begin(), o.alternative_extra_clusters.end(),
+                   [&o](std::size_t e) { return e == o.extra_clusters; }))
       ignored({"--min-candidate-clusters"}, "it chooses which segmentations to try, and --alternative-extra-clusters "
-                                            "none --contrast-merge-clusters 0 leave one");
+                                            "none (or the same as --extra-clusters) --contrast-merge-clusters 0 "
+                                            "leave one");
     for(const std::string& m : inapplicable_metric_options(cmd, o.metric))
       w.push_back(m);
   }
