@@ -57,6 +57,8 @@
 //   --band B       graph-cut band width (default 0.4; 0: every face may move, the thesis)
 //   --crease-angle A  split clusters along closed concave creases of A degrees (default 30; 0: off), k-way and contrast
 //   --merge-size-exponent E  the merge's area factor exponent (default 0.1; 0: the strength alone)
+//   --flat-seam-angle A  boundaries of a mean concave angle below A degrees merged first, largest pair first
+//                   (default 0.5; 0: off), k-way and the automatic merges
 //   --merge-separation S     the scale of the merge's embedding-separation factor (default 2; 0: off)
 //   --merge-min-area-fraction F  segments under this fraction of the area are merged first (default 0.005)
 //   --neck-scale S  the contrast merge's neck-ratio scale (default 0.4; 0: no neck factor)
@@ -153,6 +155,7 @@ struct Options
   double band = -1;        // graph-cut band width (< 0: the default)
   double crease_angle = -1; // crease split angle in degrees (< 0: the default)
   double merge_size_exponent = -1; // < 0: the default
+  double flat_seam_angle = -1;      // < 0: the default
   double merge_separation = -1;    // < 0: the default
   double merge_min_area_fraction = -1; // < 0: the default
   double neck_scale = -1;          // contrast merge: < 0: the default
@@ -304,6 +307,8 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
     ko.crease_angle = o.crease_angle;
   if(o.merge_size_exponent >= 0.)
     ko.merge_size_exponent = o.merge_size_exponent;
+  if(o.flat_seam_angle >= 0.)
+    ko.flat_seam_angle = o.flat_seam_angle;
   if(o.merge_separation >= 0.)
     ko.merge_separation_scale = o.merge_separation;
   if(o.merge_min_area_fraction >= 0.)
@@ -369,6 +374,8 @@ std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g
     ho.reference_faces = std::size_t(o.reference_faces);
   if(o.crease_angle >= 0.)
     ho.k_way.crease_angle = o.crease_angle;
+  if(o.flat_seam_angle >= 0.)
+    ho.k_way.flat_seam_angle = o.flat_seam_angle;
   if(o.over_segmentations > 0)
     ho.over_segmentations = o.over_segmentations;
   return SpectralSeg::segment_hybrid(wg, ho, exec).labels;
@@ -584,6 +591,8 @@ int run(int argc, char** argv)
       o.band = std::stod(next());
     else if(a == "--crease-angle")
       o.crease_angle = std::stod(next());
+    else if(a == "--flat-seam-angle")
+      o.flat_seam_angle = std::stod(next());
     else if(a == "--merge-size-exponent")
       o.merge_size_exponent = std::stod(next());
     else if(a == "--merge-separation")

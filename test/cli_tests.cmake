@@ -322,6 +322,13 @@ run_cli(2 "error: --contrast-merge-clusters cannot be used here" segment ${WORK}
         --contrast-merge-clusters 5 --labels ${WORK}/q.seg)
 run_cli(2 "error: --min-candidate-clusters cannot be used here" segment ${WORK}/quads.off --k auto
         --min-candidate-clusters 3 --labels ${WORK}/q.seg)
+# --flat-seam-angle orders merges: refused where nothing is merged, and with the salient cuts
+run_cli(2 "error: --flat-seam-angle cannot be used here: .*merge nothing" segment ${WORK}/quads.off --k 2
+        --extra-clusters 0 --alternative-extra-clusters none --contrast-merge-clusters 0 --flat-seam-angle 1
+        --labels ${WORK}/q.seg)
+run_cli(2 "error: --flat-seam-angle cannot be used here" segment ${WORK}/quads.off --k auto
+        --auto-method salient-cuts --flat-seam-angle 1 --labels ${WORK}/q.seg)
+run_cli(0 "segments: 2" segment ${WORK}/quads.off --k 2 --flat-seam-angle 0 --labels ${WORK}/q.seg)
 run_cli(2 "error: --min-candidate-clusters cannot be used here: .*leave one" segment ${WORK}/quads.off --k 2
         --alternative-extra-clusters none --contrast-merge-clusters 0 --min-candidate-clusters 3 --labels ${WORK}/q.seg)
 run_cli(2 "error: --min-candidate-clusters cannot be used here: .*leave one" segment ${WORK}/quads.off --k 2

@@ -725,6 +725,62 @@ TEST_CASE("contrast merge: the embedding separation orders the merges, the limit
   CHECK(h.nodes[0].cut_order == 0);
 }
 
+TEST_CASE("merge: flat seams go first, the one between the largest segments first", "[merge]")
+{
+  // a flat strip of 12 triangles in three segments of 2, 5 and 5 faces:
+  // every dual edge is flat, so both seams are flat
+  const Dual_graph g = make_dual_graph(test_meshes::to_mesh<Mesh>(test_meshes::square_strip(6)));
+  REQUIRE(g.number_of_faces() == 12);
+  std::vector<int> parts(12);
+  for(std::size_t f = 0; f < 12; ++f)
+    parts[f] = f < 2 ? 0 : f < 7 ? 1 : 2;
+  // a cost that takes the seam around the smaller segment first
+  const auto smaller_first = [](const Refinement::internal::Segment_boundary&, double smaller, double, double) {
+    return Refinement::internal::Merge_cost{smaller, smaller};
+  };
+  const double half_degree = 0.5 * 3.14159265358979323846 / 180.;
+  std::vector<int> labels = parts;
+  CHECK(Refinement::internal::merge_cheapest_boundaries(g, {}, labels, 2, 0., std::numeric_limits<double>::infinity(),
+                                                        smaller_first) == 2);
+  CHECK(labels[0] == labels[2]); // by the cost: the 2-face segment joins its neighbour
+  CHECK(labels[6] != labels[7]);
+  labels = parts;
+  CHECK(Refinement::internal::merge_cheapest_boundaries(g, {}, labels, 2, 0., std::numeric_limits<double>::infinity(),
+                                                        smaller_first, nullptr, nullptr, nullptr, half_degree) == 2);
+  CHECK(labels[0] != labels[2]); // flat seams: the two large segments join
+  CHECK(labels[6] == labels[7]);
+  // even past a limit that stops every other merge
+  labels = parts;
+  CHECK(Refinement::internal::merge_cheapest_boundaries(g, {}, labels, 1, 0., 0., smaller_first, nullptr, nullptr,
+                                                        nullptr, half_degree) == 1);
+  // a fold along the 1|2 seam (concave angles given): only 0|1 is flat now
+  std::vector<double> folded(g.number_of_edges(), 0.);
+  for(std::size_t d = 0; d < folded.size(); ++d)
+  {
+    const auto& e = g.edge(Dual_graph::size_type(d));
+    if(parts[e.face[0]] + parts[e.face[1]] == 3)
+      folded[d] = 0.1;
+  }
+  labels = parts;
+  CHECK(Refinement::internal::merge_cheapest_boundaries(
+          g, {}, labels, 2, 0., std::numeric_limits<double>::infinity(),
+          [](const Refinement::internal::Segment_boundary&, double smaller, double, double) {
+            return Refinement::internal::Merge_cost{1. - smaller, 1. - smaller}; // the largest pair first
+          },
+          nullptr, nullptr, &folded, half_degree) == 2);
+  CHECK(labels[0] == labels[2]); // the flat 0|1 seam before the folded one, whatever the cost
+  CHECK(labels[6] != labels[7]);
+  // the option is checked
+  K_way_options o;
+  o.flat_seam_angle = -1.;
+  CHECK_THROWS_AS(segment_k_way(star().weighted, 5, o), Invalid_input);
+  o.flat_seam_angle = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_AS(segment_k_way(star().weighted, 5, o), Invalid_input);
+  Hybrid_options h;
+  h.k_way.flat_seam_angle = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(segment_hybrid(star().weighted, h), Invalid_input);
+}
+
 TEST_CASE("merge: the boundary of each pair with the other segments", "[merge]")
 {
   // thirds of a strip of unit squares: boundaries 0|1 and 1|2 of length 1.

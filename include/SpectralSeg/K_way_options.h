@@ -131,6 +131,15 @@ struct Basic_K_way_options
   /// that a part bounded by a crease all around (a shaft in a housing, a
   /// knob on a lid) is not shared with its neighbour; 0 turns it off
   double crease_angle = 30.;
+  /// in the merges of extra clusters and in the contrast merge (our
+  /// addition): a boundary whose mean concave dihedral angle is below this,
+  /// in degrees, is a flat seam: with no fold along it, it is no evidence of
+  /// a part boundary, so flat seams are merged before every other boundary
+  /// (after the segments under `merge_min_area_fraction`), the one between
+  /// the two largest segments first. A rod cut into bands by K-means
+  /// then keeps its middle whole and its ends apart, instead of three bands
+  /// of a third each. 0 turns it off
+  double flat_seam_angle = 0.5;
   /// whether the result keeps its embedding's coordinates
   /// (`K_way_result::embedding`, one row per face, the largest array of the
   /// result). Without them (our addition, for callers that only need the
@@ -154,6 +163,7 @@ struct Basic_K_way_options
     o.contrast_merge_clusters = 0;
     o.graph_cut = Refinement::Graph_cut_options();
     o.crease_angle = 0.;
+    o.flat_seam_angle = 0.;
     o.merge_size_exponent = 0.;
     o.merge_separation_scale = 0.;
     return o;
@@ -181,6 +191,7 @@ struct Basic_K_way_options
     o.merge_size_exponent = merge_size_exponent;
     o.merge_separation_scale = merge_separation_scale;
     o.crease_angle = crease_angle;
+    o.flat_seam_angle = flat_seam_angle;
     o.keep_embedding_coordinates = keep_embedding_coordinates;
     return o;
   }

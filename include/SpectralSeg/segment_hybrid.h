@@ -47,7 +47,8 @@ struct Basic_hybrid_options
   /// factor, as in `segment_k_way()`; 0: none) and `crease_angle` (the
   /// clusters are split along closed loops of concave creases of at least
   /// this many degrees before the merge, as in `segment_k_way()`; 0: no
-  /// split, the contrast merge until 2026-11-25); `extra_clusters`,
+  /// split, the contrast merge until 2026-11-25), `flat_seam_angle` (as in
+  /// `segment_k_way()`); `extra_clusters`,
   /// `alternative_extra_clusters`, `contrast_merge_clusters`,
   /// `merge_strength_limit` and `merge_size_exponent` are not used
   Basic_K_way_options<AffinityKernel> k_way;
@@ -168,8 +169,9 @@ typedef Basic_hybrid_options<Kernels::Exponential_kernel> Hybrid_options;
 ///         is not finite and positive,
 ///         `options.k_way.merge_separation_scale` is negative or not a
 ///         number, `options.neck_scale` is negative or not finite,
-///         `options.k_way.crease_angle` is not a number, or
-///         `options.over_segmentations` is 0
+///         `options.k_way.crease_angle` is not a number,
+///         `options.k_way.flat_seam_angle` is not a finite number of at
+///         least 0, or `options.over_segmentations` is 0
 /// \throws Error if the affinity matrix has no positive eigenvalue after the first
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename AffinityKernel = Kernels::Exponential_kernel>
@@ -189,6 +191,8 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     throw Invalid_input("hybrid segmentation: the neck scale must be a finite number of at least 0");
   if(std::isnan(options.k_way.crease_angle))
     throw Invalid_input("hybrid segmentation: the crease angle is not a number");
+  if(!(options.k_way.flat_seam_angle >= 0. && std::isfinite(options.k_way.flat_seam_angle)))
+    throw Invalid_input("hybrid segmentation: the flat seam angle must be a finite number of at least 0");
   if(options.over_segmentations < 1)
     throw Invalid_input("hybrid segmentation: at least one over-segmentation is needed");
   const std::size_t n = graph.graph().number_of_faces();

@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <deque>
 #include <functional>
 #include <future>
@@ -187,7 +188,8 @@ std::size_t merge_weakest_segments(const Weighted_dual_graph& graph, std::size_t
   Refinement::internal::Merge_history history;
   const std::size_t m = Refinement::internal::merge_weakest(
     graph.graph(), concave, labels, k_final, options.merge_strength_limit, options.merge_min_area_fraction,
-    options.merge_size_exponent, merge_separation(graph, options, r.embedding.coordinates), &history);
+    options.merge_size_exponent, merge_separation(graph, options, r.embedding.coordinates), &history,
+    flat_seam_radians(options));
   keep_merges(graph, std::move(history), r, keep);
   return m;
 }
@@ -301,7 +303,8 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 ///    sharp concave creases (`options.crease_angle`,
 ///    `Refinement::crease_regions()`), made connected regions, and the
 ///    adjacent ones with the weakest (least concave) boundary are merged
-///    until \f$k\f$ are left (`Refinement::merge_weakest_boundaries()`);
+///    until \f$k\f$ are left (`Refinement::merge_weakest_boundaries()`,
+///    flat seams first: `options.flat_seam_angle`);
 ///    each merged segment's proxy is its mean in the embedding;
 /// 4. graph-cut boundary enhancement on the \f$k\f$ segments (optional;
 ///    `options.graph_cut`, by default in a band along the boundaries);
@@ -342,8 +345,9 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 /// \param k the number of segments wanted
 /// \param options every parameter of the method, the kernel included
 /// \param exec threads and progress callback
-/// \throws Invalid_input if `k` is 0 or larger than the number of faces, or
-///         `options.merge_separation_scale` is negative or not a number
+/// \throws Invalid_input if `k` is 0 or larger than the number of faces,
+///         `options.merge_separation_scale` is negative or not a number, or
+///         `options.flat_seam_angle` is negative or not finite
 /// \throws Error if the affinity matrix has no positive eigenvalue after the first
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename AffinityKernel = Kernels::Exponential_kernel>
@@ -357,6 +361,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
                         " faces (k must be between 1 and the number of faces)");
   if(!(options.merge_separation_scale >= 0.))
     throw Invalid_input("k-way segmentation: the merge separation scale must be a number of at least 0");
+  if(!(options.flat_seam_angle >= 0. && std::isfinite(options.flat_seam_angle)))
+    throw Invalid_input("k-way segmentation: the flat seam angle must be a finite number of at least 0");
   K_way_result r;
   internal::Stage_timer lap(r.timings);
   if(k == 1 || n < 3)

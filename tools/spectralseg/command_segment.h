@@ -48,6 +48,7 @@ struct Segment_options
   std::string graph_cut = "banded";
   double crease_angle = 0.;
   double merge_size_exponent = 0.;
+  double flat_seam_angle = 0.;
   double merge_separation = 0.;
   double min_boundary_contrast = 0.; // 0: the method's default (contrast-merge 4, concave-merge 3)
   double neck_scale = 0.;
@@ -100,6 +101,12 @@ inline void add_segment_method_options(CLI::App* cmd, Segment_options& o)
   cmd->add_option("--crease-angle", o.crease_angle,
                   "with extra clusters and in --k auto's contrast merge: split the K-means clusters along closed loops "
                   "of concave creases of at least this many degrees before merging (0: off)")
+    ->capture_default_str()
+    ->check(Finite_range(0., 180.));
+  cmd->add_option("--flat-seam-angle", o.flat_seam_angle,
+                  "in the merges of extra clusters and in --k auto's merges: a boundary whose mean concave angle is "
+                  "below this many degrees is a flat seam, merged before every other boundary, the one between the "
+                  "largest segments first (0: off)")
     ->capture_default_str()
     ->check(Finite_range(0., 180.));
   cmd->add_option("--merge-size-exponent", o.merge_size_exponent,
@@ -194,7 +201,8 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
             "it applies to --k auto --auto-method salient-cuts");
   if(salient)
     ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--kernel", "--sampling",
-             "--samples", "--seed", "--no-graph-cut", "--graph-cut", "--crease-angle", "--graph-cut-backend",
+             "--samples", "--seed", "--no-graph-cut", "--graph-cut", "--crease-angle", "--flat-seam-angle",
+             "--graph-cut-backend",
              "--extra-clusters", "--alternative-extra-clusters", "--contrast-merge-clusters",
              "--min-candidate-clusters", "--max-k", "--min-boundary-contrast"},
             "--auto-method salient-cuts uses none of the k-way options");
@@ -215,6 +223,12 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
       ignored({"--min-candidate-clusters"}, "it chooses which segmentations to try, and --alternative-extra-clusters "
                                             "none (or the same as --extra-clusters) --contrast-merge-clusters 0 "
                                             "leave one");
+    // k clusters and no contrast merge: nothing is merged
+    if(!automatic && o.extra_clusters == 0 && o.contrast_merge_clusters == 0 &&
+       std::all_of(o.alternative_extra_clusters.begin(), o.alternative_extra_clusters.end(),
+                   [](std::size_t e) { return e == 0; }))
+      ignored({"--flat-seam-angle"}, "it orders the merges of extra clusters, and --extra-clusters 0 "
+                                     "--alternative-extra-clusters none --contrast-merge-clusters 0 merge nothing");
     for(const std::string& m : inapplicable_metric_options(cmd, o.metric))
       w.push_back(m);
   }

@@ -44,6 +44,7 @@ Segment_options::Segment_options()
   min_candidate_clusters = k_way.min_candidate_clusters;
   crease_angle = k_way.crease_angle;
   merge_size_exponent = k_way.merge_size_exponent;
+  flat_seam_angle = k_way.flat_seam_angle;
   merge_separation = k_way.merge_separation_scale;
   neck_scale = SpectralSeg::Hybrid_options().neck_scale;
   over_segmentations = SpectralSeg::Hybrid_options().over_segmentations;
@@ -222,6 +223,7 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
     options.graph_cut = SpectralSeg::Refinement::Graph_cut_options();
   options.crease_angle = o.crease_angle;
   options.merge_size_exponent = o.merge_size_exponent;
+  options.flat_seam_angle = o.flat_seam_angle;
   options.merge_separation_scale = o.merge_separation;
   options.keep_embedding_coordinates = false; // the tool reports the samples and width only: less memory
   if(o.graph_cut_backend == "maxflow")

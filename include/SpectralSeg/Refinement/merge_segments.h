@@ -132,12 +132,18 @@ struct Merge_history
 // segment per connected set, and every merge is recorded there.
 // Segment_boundary::concave sums `concave_angles` (one per dual edge) when
 // given, else each edge's concave dihedral angle (concave_angle_weights()).
+// A boundary whose mean concave angle is below `flat_angle` (radians; 0:
+// none) is a flat seam: with no fold along it, it says nothing of a part
+// boundary, so flat seams go after the small segments and before every
+// other boundary, whatever their cost and the limit, and among them the
+// one whose smaller segment is largest goes first (a seam kept wrongly
+// between two large pieces splits the most pairs of faces).
 template <typename Cost>
 std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                       std::vector<int>& labels, std::size_t min_segments, double min_area_fraction,
                                       double limit, const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr,
                                       Merge_history* history = nullptr,
-                                      const std::vector<double>* concave_angles = nullptr)
+                                      const std::vector<double>* concave_angles = nullptr, double flat_angle = 0.)
 {
   const std::size_t n = graph.number_of_faces();
   // dense labels 0 .. s-1 in order of first face
@@ -208,6 +214,9 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
       answer = target;
       past = true;
     }
+    // the order of a pair: (0, small segments by area), (1, flat seams,
+    // largest first), (2, the others by cost); lowest first
+    int cheapest_rank = 3;
     double cheapest = std::numeric_limits<double>::infinity(), strength = 0.;
     std::size_t wa = s, wb = s;
     for(std::size_t a = 0; a < s; ++a)
@@ -221,10 +230,23 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
                                   coordinates ? embedding_separation(moments[a], moments[b])
                                               : std::numeric_limits<double>::infinity(),
                                   std::max(0., perimeter[a] + perimeter[b] - 2. * nb.second.length));
-        // small segments go in [-1, 0): before every boundary
-        const double order = smaller < small ? -1. + smaller / small : past || c.strength < limit ? c.order : NAN;
-        if(order < cheapest) // strict: ties go to the smallest labels
+        int rank = 2;
+        double order = c.order;
+        if(smaller < small)
         {
+          rank = 0;
+          order = smaller;
+        }
+        else if(nb.second.concave < flat_angle * nb.second.length)
+        {
+          rank = 1;
+          order = -smaller;
+        }
+        else if((!past && !(c.strength < limit)) || std::isnan(order))
+          continue; // too strong to merge
+        if(rank < cheapest_rank || (rank == cheapest_rank && order < cheapest)) // strict: ties go to the smallest labels
+        {
+          cheapest_rank = rank;
           cheapest = order;
           strength = c.strength;
           wa = a;
@@ -282,7 +304,8 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
 SPECTRALSEG_INLINE std::size_t merge_weakest(const Dual_graph& graph, const std::vector<double>& weights,
                                              std::vector<int>& labels, std::size_t k, double strength_limit,
                                              double min_area_fraction, double size_exponent,
-                                             const Embedding_separation& separation, Merge_history* history = nullptr)
+                                             const Embedding_separation& separation, Merge_history* history = nullptr,
+                                             double flat_angle = 0.)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const bool separate = separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0;
@@ -295,7 +318,7 @@ SPECTRALSEG_INLINE std::size_t merge_weakest(const Dual_graph& graph, const std:
         c *= std::pow(r / separation.scale, separation.exponent);
       return Merge_cost{c, mean};
     },
-    separate ? separation.coordinates : nullptr, history);
+    separate ? separation.coordinates : nullptr, history, nullptr, flat_angle);
 }
 #else
 ;

@@ -60,13 +60,15 @@ SPECTRALSEG_INLINE double separation_exponent(double share)
 // component is recorded there (Refinement::internal::merge_cheapest_boundaries()).
 // The concave angles are those of Refinement::concave_angle_weights() at
 // `reference_faces` (0: the mesh's own resolution), or `given_angles` when
-// not null (those angles, made once for several merges).
+// not null (those angles, made once for several merges). Boundaries whose
+// mean concave angle is below `flat_angle` (radians) are flat seams
+// (Refinement::internal::merge_cheapest_boundaries()).
 SPECTRALSEG_INLINE std::size_t merge_by_contrast(
     const Dual_graph& graph, const std::vector<double>& weights, std::vector<int>& labels, std::size_t min_segments,
     double limit, double min_area_fraction,
     const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(), double neck_scale = 0.,
     Refinement::internal::Merge_history* history = nullptr, std::size_t reference_faces = 0,
-    const std::vector<double>* given_angles = nullptr)
+    const std::vector<double>* given_angles = nullptr, double flat_angle = 0.)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   // the concave angles at the reference resolution (the mesh's own up to it)
@@ -108,7 +110,7 @@ SPECTRALSEG_INLINE std::size_t merge_by_contrast(
     },
     separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0 ? separation.coordinates
                                                                                             : nullptr,
-    history, &angles);
+    history, &angles, flat_angle);
 }
 #else
 ;
@@ -130,6 +132,13 @@ Refinement::Embedding_separation merge_separation(const Weighted_dual_graph& gra
     separation.exponent = separation_exponent(Refinement::sharp_crease_share(graph.graph()));
   }
   return separation;
+}
+
+// K_way_options::flat_seam_angle in radians.
+template <typename AffinityKernel>
+double flat_seam_radians(const Basic_K_way_options<AffinityKernel>& k_way)
+{
+  return k_way.flat_seam_angle * (3.14159265358979323846 / 180.);
 }
 
 // A merge's history into `*keep` (for hierarchy_from_merges() later), or
@@ -201,7 +210,7 @@ std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
   const std::size_t m =
     merge_by_contrast(graph.graph(), graph.weights(), r.labels, min_segments, limit, k_way.merge_min_area_fraction,
                       merge_separation(graph, k_way, r.embedding.coordinates), neck_scale, &history,
-                      reference_faces, &s.angles);
+                      reference_faces, &s.angles, flat_seam_radians(k_way));
   keep_merges(graph, std::move(history), r, keep);
   return m;
 }
