@@ -565,7 +565,7 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
                               bool boundary_enhancement, long long extra_clusters,
                               const std::vector<long long>& alternative_extra_clusters,
                               long long contrast_merge_clusters, long long min_candidate_clusters,
-                              long long threads, const py::object& progress, bool report, bool connect_touching_parts,
+                              double flat_seam_angle, long long threads, const py::object& progress, bool report, bool connect_touching_parts,
                               double contact_distance, double speck_area_fraction)
 {
   const Soup soup = soup_from_arrays(vertices, faces);
@@ -578,6 +578,9 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
     ks.options.alternative_extra_clusters.push_back(count("alternative_extra_clusters", e, 0, 1000));
   ks.options.contrast_merge_clusters = count("contrast_merge_clusters", contrast_merge_clusters, 0, 1000);
   ks.options.min_candidate_clusters = count("min_candidate_clusters", min_candidate_clusters, 0, 1000);
+  if(!(flat_seam_angle >= 0. && flat_seam_angle < 180.))
+    invalid("flat_seam_angle must be a number of degrees in [0, 180)");
+  ks.options.flat_seam_angle = flat_seam_angle;
   const unsigned t = static_cast<unsigned>(count("threads", threads, 0, 4096));
   Progress_bridge bridge(progress);
   struct Out
@@ -1036,6 +1039,7 @@ malformed file, InvalidInputError for a face that is not a triangle.)doc");
           static_cast<long long>(SpectralSeg::K_way_options().contrast_merge_clusters),
         py::arg("min_candidate_clusters") =
           static_cast<long long>(SpectralSeg::K_way_options().min_candidate_clusters),
+        py::arg("flat_seam_angle") = SpectralSeg::K_way_options().flat_seam_angle,
         py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("report") = false,
         py::arg("connect_touching_parts") = true, py::arg("contact_distance") = 0.005,
         py::arg("speck_area_fraction") = 0.01,
@@ -1061,6 +1065,10 @@ min_candidate_clusters: of the segmentations of extra_clusters and
     alternative_extra_clusters, those of fewer K-means clusters (k + extra)
     are not tried when others are (default 6: with k = 2 or 3, k + 2
     clusters cut the largest body in pieces); 0: all are tried
+flat_seam_angle: in the merges, a boundary whose mean concave angle is
+    below this many degrees is a flat seam, merged before every other
+    boundary, the one between the largest segments first (default 0.5);
+    0: off
 )doc") + segmentation_method_doc)
           .c_str());
 

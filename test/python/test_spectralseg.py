@@ -252,6 +252,10 @@ class SameAsCommandLine(unittest.TestCase):
         self.check(labels, ["--k", "4", "--contrast-merge-clusters", "0"])
         labels = spectralseg.k_way_segmentation(v, f, 3, min_candidate_clusters=0)
         self.check(labels, ["--k", "3", "--min-candidate-clusters", "0"])
+        labels = spectralseg.k_way_segmentation(v, f, 4, flat_seam_angle=0)
+        self.check(labels, ["--k", "4", "--flat-seam-angle", "0"])
+        labels = spectralseg.k_way_segmentation(v, f, 4, flat_seam_angle=20)
+        self.check(labels, ["--k", "4", "--flat-seam-angle", "20"])
 
     def test_automatic(self):
         v, f = Mesh.get()
@@ -406,6 +410,8 @@ class Errors(unittest.TestCase):
         self.assertInvalid("metric must be one of", seg, v, f, 3, metric="euclidean")
         self.assertInvalid("sampling must be one of", seg, v, f, 3, sampling="random")
         self.assertInvalid("threads must be", seg, v, f, 3, threads=-1)
+        self.assertInvalid(r"flat_seam_angle must be a number of degrees in \[0, 180\)", seg, v, f, 3,
+                           flat_seam_angle=float("nan"))
         self.assertInvalid("weights must hold 2 or 3", seg, v, f, 3, weights=[1.0])
         self.assertInvalid("weights must not all be 0", seg, v, f, 3, weights=[0, 0, 0])
         self.assertInvalid("method must be one of", spectralseg.automatic_segmentation, v, f, method="magic")
