@@ -565,8 +565,8 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
                               bool boundary_enhancement, long long extra_clusters,
                               const std::vector<long long>& alternative_extra_clusters,
                               long long contrast_merge_clusters, long long min_candidate_clusters,
-                              double flat_seam_angle, long long threads, const py::object& progress, bool report, bool connect_touching_parts,
-                              double contact_distance, double speck_area_fraction)
+                              double flat_seam_angle, long long threads, const py::object& progress, bool report,
+                              bool connect_touching_parts, double contact_distance, double speck_area_fraction)
 {
   const Soup soup = soup_from_arrays(vertices, faces);
   const Graph_options go = graph_options(connect_touching_parts, contact_distance, speck_area_fraction);

@@ -774,6 +774,8 @@ TEST_CASE("merge: flat seams go first, the one between the largest segments firs
   K_way_options o;
   o.flat_seam_angle = -1.;
   CHECK_THROWS_AS(segment_k_way(star().weighted, 5, o), Invalid_input);
+  o.flat_seam_angle = 180.;
+  CHECK_THROWS_AS(segment_k_way(star().weighted, 5, o), Invalid_input);
   o.flat_seam_angle = std::numeric_limits<double>::infinity();
   CHECK_THROWS_AS(segment_k_way(star().weighted, 5, o), Invalid_input);
   Hybrid_options h;

@@ -170,8 +170,8 @@ typedef Basic_hybrid_options<Kernels::Exponential_kernel> Hybrid_options;
 ///         `options.k_way.merge_separation_scale` is negative or not a
 ///         number, `options.neck_scale` is negative or not finite,
 ///         `options.k_way.crease_angle` is not a number,
-///         `options.k_way.flat_seam_angle` is not a finite number of at
-///         least 0, or `options.over_segmentations` is 0
+///         `options.k_way.flat_seam_angle` is not in [0, 180), or
+///         `options.over_segmentations` is 0
 /// \throws Error if the affinity matrix has no positive eigenvalue after the first
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename AffinityKernel = Kernels::Exponential_kernel>
@@ -191,8 +191,8 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     throw Invalid_input("hybrid segmentation: the neck scale must be a finite number of at least 0");
   if(std::isnan(options.k_way.crease_angle))
     throw Invalid_input("hybrid segmentation: the crease angle is not a number");
-  if(!(options.k_way.flat_seam_angle >= 0. && std::isfinite(options.k_way.flat_seam_angle)))
-    throw Invalid_input("hybrid segmentation: the flat seam angle must be a finite number of at least 0");
+  if(!(options.k_way.flat_seam_angle >= 0. && options.k_way.flat_seam_angle < 180.))
+    throw Invalid_input("hybrid segmentation: the flat seam angle must be a number of degrees in [0, 180)");
   if(options.over_segmentations < 1)
     throw Invalid_input("hybrid segmentation: at least one over-segmentation is needed");
   const std::size_t n = graph.graph().number_of_faces();

@@ -347,7 +347,7 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 /// \param exec threads and progress callback
 /// \throws Invalid_input if `k` is 0 or larger than the number of faces,
 ///         `options.merge_separation_scale` is negative or not a number, or
-///         `options.flat_seam_angle` is negative or not finite
+///         `options.flat_seam_angle` is not in [0, 180)
 /// \throws Error if the affinity matrix has no positive eigenvalue after the first
 /// \throws Operation_cancelled if the progress callback asks to stop
 template <typename AffinityKernel = Kernels::Exponential_kernel>
@@ -361,8 +361,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
                         " faces (k must be between 1 and the number of faces)");
   if(!(options.merge_separation_scale >= 0.))
     throw Invalid_input("k-way segmentation: the merge separation scale must be a number of at least 0");
-  if(!(options.flat_seam_angle >= 0. && std::isfinite(options.flat_seam_angle)))
-    throw Invalid_input("k-way segmentation: the flat seam angle must be a finite number of at least 0");
+  if(!(options.flat_seam_angle >= 0. && options.flat_seam_angle < 180.))
+    throw Invalid_input("k-way segmentation: the flat seam angle must be a number of degrees in [0, 180)");
   K_way_result r;
   internal::Stage_timer lap(r.timings);
   if(k == 1 || n < 3)

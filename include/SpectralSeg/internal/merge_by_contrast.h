@@ -17,6 +17,8 @@
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
+#include <boost/math/constants/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -138,7 +140,7 @@ Refinement::Embedding_separation merge_separation(const Weighted_dual_graph& gra
 template <typename AffinityKernel>
 double flat_seam_radians(const Basic_K_way_options<AffinityKernel>& k_way)
 {
-  return k_way.flat_seam_angle * (3.14159265358979323846 / 180.);
+  return k_way.flat_seam_angle * boost::math::constants::pi<double>() / 180.;
 }
 
 // A merge's history into `*keep` (for hierarchy_from_merges() later), or
