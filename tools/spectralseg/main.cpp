@@ -29,38 +29,8 @@
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
-#if defined(__GLIBC__) && defined(__linux__)
-#include <unistd.h>
-#endif
 
 namespace {
-
-#if defined(__GLIBC__) && defined(__linux__)
-// glibc reads its tunables only when a program starts. Unless the user set
-// glibc.malloc.hugetlb (to any value, 0 included), the tool starts itself
-// again with glibc.malloc.hugetlb=1: malloc then asks for transparent huge
-// pages (madvise) on the heaps it grows, and the first touch of the mesh,
-// graph and embedding arrays costs a fraction of the page faults (figures
-// in doc/benchmarks.md). Where the kernel does not give huge pages, or
-// glibc does not know the tunable, nothing changes; if the new start
-// fails, this one goes on.
-void restart_with_huge_pages(char** argv)
-{
-  const char* name = "GLIBC_TUNABLES";
-  const char* old = std::getenv(name);
-  if(old != nullptr && std::strstr(old, "glibc.malloc.hugetlb") != nullptr)
-    return;
-  const std::string previous = old != nullptr ? old : "";
-  const std::string tunables = previous.empty() ? "glibc.malloc.hugetlb=1" : previous + ":glibc.malloc.hugetlb=1";
-  if(setenv(name, tunables.c_str(), 1) != 0)
-    return;
-  execv("/proc/self/exe", argv);
-  if(old != nullptr) // still here: the start failed
-    setenv(name, previous.c_str(), 1);
-  else
-    unsetenv(name);
-}
-#endif
 
 // Exit codes (user manual, "Exit status").
 constexpr int exit_ok = 0;
@@ -86,9 +56,6 @@ int finish(int code)
 int main(int argc, char** argv)
 {
   using namespace spectralseg_cli;
-#if defined(__GLIBC__) && defined(__linux__)
-  restart_with_huge_pages(argv);
-#endif
   // over a file-size limit (ulimit -f), writes fail with EFBIG and are
   // reported, instead of the process being killed with a half-written file
   std::signal(SIGXFSZ, SIG_IGN);
