@@ -15,12 +15,15 @@ parent's label in each human segmentation (`seg/ID/ID_i.seg`), and
 `--half upper` splits the other half; `--half all` splits every face (a
 control: the same change of the triangles, evenly); `--half all --scheme
 midpoint` cuts every face into four at its edges' midpoints instead (a
-finer copy of the same surface with triangles of the same shapes). The
+finer copy of the same surface with triangles of the same shapes), and
+`--half all --scheme loop` does the same with Loop's subdivision rules (the
+surface smoothed, as a finer scan of the shape would be: its dihedral
+angles shrink with the edges instead of staying on the old edges). The
 first child of input face i is face i of the copy, so labels of the copy
 cut to the input's face count score against the input's segmentations.
 
 usage: make_uneven_psb.py PSB_DIR OUT_DIR [--levels 1] [--half lower|upper|all]
-                          [--scheme centroid|midpoint] [--ids 1,5,...]
+                          [--scheme centroid|midpoint|loop] [--ids 1,5,...]
 Needs numpy (Debian's python3-numpy).
 """
 import argparse
@@ -70,6 +73,53 @@ def midpoint_split(points, faces, levels):
     return points, faces, parent
 
 
+def loop_subdivide(points, faces):
+    """subdivide()'s 1-to-4 split with Loop's rules for the positions: an
+    edge's new vertex at 3/8 of its ends and 1/8 of the two opposite
+    vertices (the midpoint on a boundary edge), an old vertex of valence n
+    moved towards its neighbours' mean by n beta (Loop's beta); boundary
+    vertices stay."""
+    new_points, children = subdivide(points, faces)
+    n_old, n = len(points), len(faces)
+    edges = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
+    opposite = np.concatenate([faces[:, 2], faces[:, 0], faces[:, 1]])
+    keys = np.sort(edges, axis=1)
+    unique, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+    inverse = inverse.reshape(-1)
+    order = np.argsort(first, kind="stable")  # as subdivide() numbers the midpoints
+    far = np.zeros((len(unique), 3))
+    count = np.zeros(len(unique))
+    np.add.at(far, inverse, points[opposite])
+    np.add.at(count, inverse, 1)
+    ends = points[unique[:, 0]] + points[unique[:, 1]]
+    edge_point = np.where((count == 2)[:, None], 0.375 * ends + 0.125 * far, 0.5 * ends)
+    boundary = np.zeros(n_old, dtype=bool)
+    boundary[unique[count != 2].reshape(-1)] = True
+    total = np.zeros((n_old, 3))
+    valence = np.zeros(n_old)
+    for i, j in ((0, 1), (1, 0)):
+        np.add.at(total, unique[:, i], points[unique[:, j]])
+        np.add.at(valence, unique[:, i], 1)
+    v = np.maximum(valence, 1)
+    beta = (0.625 - (0.375 + 0.25 * np.cos(2 * np.pi / v)) ** 2) / v
+    moved = (1 - v * beta)[:, None] * points + beta[:, None] * total
+    moved[boundary | (valence == 0)] = points[boundary | (valence == 0)]
+    new_points = new_points.copy()
+    new_points[:n_old] = moved
+    new_points[n_old:] = edge_point[order]
+    return new_points, children
+
+
+def loop_split(points, faces, levels):
+    """midpoint_split() with Loop's positions."""
+    parent = np.arange(len(faces))
+    for _ in range(levels):
+        points, children = loop_subdivide(points, faces)
+        faces = children.reshape(-1, 4, 3).transpose(1, 0, 2).reshape(-1, 3)
+        parent = np.tile(parent, 4)
+    return points, faces, parent
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("psb")
@@ -78,14 +128,15 @@ def main():
     parser.add_argument("--ids", default="")
     parser.add_argument("--half", choices=["lower", "upper", "all"], default="lower",
                         help="the faces split: the lower half (default), the upper half, or all (a control)")
-    parser.add_argument("--scheme", choices=["centroid", "midpoint"], default="centroid",
+    parser.add_argument("--scheme", choices=["centroid", "midpoint", "loop"], default="centroid",
                         help="centroid: each chosen face into 3 at its centroid (default); midpoint: every "
-                             "face into 4 at its edges' midpoints (a finer copy; needs --half all)")
+                             "face into 4 at its edges' midpoints (a finer copy; needs --half all); loop: "
+                             "the same split with Loop's smoothing rules (needs --half all)")
     args = parser.parse_args()
     if args.levels < 1:
         sys.exit("--levels must be at least 1")
-    if args.scheme == "midpoint" and args.half != "all":
-        sys.exit("--scheme midpoint splits every face: give --half all")
+    if args.scheme in ("midpoint", "loop") and args.half != "all":
+        sys.exit(f"--scheme {args.scheme} splits every face: give --half all")
     wanted = set(args.ids.split(",")) if args.ids else None
     with open(os.path.join(args.psb, "index.tsv")) as f:
         header, *rows = [line.rstrip("\n").split("\t") for line in f if line.strip()]
@@ -98,6 +149,8 @@ def main():
         points, faces = read_off(os.path.join(args.psb, "off", model + ".off"))
         if args.scheme == "midpoint":
             points, faces, parent = midpoint_split(points, faces, args.levels)
+        elif args.scheme == "loop":
+            points, faces, parent = loop_split(points, faces, args.levels)
         else:
             points, faces, parent = split_half(points, faces, args.levels, args.half)
         write_off(os.path.join(args.out, "off", model + ".off"), points, faces)
