@@ -62,12 +62,13 @@ def split_half(points, faces, levels, half):
     return points, faces, parent
 
 
-def midpoint_split(points, faces, levels):
-    """1-to-4 midpoint subdivision of every face, L times; the first child of
+def four_way_split(points, faces, levels, split=subdivide):
+    """1-to-4 subdivision of every face by `split` (subdivide(): at the
+    midpoints; loop_subdivide(): Loop's rules), L times; the first child of
     every face comes first, in the input's face order."""
     parent = np.arange(len(faces))
     for _ in range(levels):
-        points, children = subdivide(points, faces)
+        points, children = split(points, faces)
         faces = children.reshape(-1, 4, 3).transpose(1, 0, 2).reshape(-1, 3)
         parent = np.tile(parent, 4)
     return points, faces, parent
@@ -80,7 +81,7 @@ def loop_subdivide(points, faces):
     moved towards its neighbours' mean by n beta (Loop's beta); boundary
     vertices stay."""
     new_points, children = subdivide(points, faces)
-    n_old, n = len(points), len(faces)
+    n_old = len(points)
     edges = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
     opposite = np.concatenate([faces[:, 2], faces[:, 0], faces[:, 1]])
     keys = np.sort(edges, axis=1)
@@ -110,16 +111,6 @@ def loop_subdivide(points, faces):
     return new_points, children
 
 
-def loop_split(points, faces, levels):
-    """midpoint_split() with Loop's positions."""
-    parent = np.arange(len(faces))
-    for _ in range(levels):
-        points, children = loop_subdivide(points, faces)
-        faces = children.reshape(-1, 4, 3).transpose(1, 0, 2).reshape(-1, 3)
-        parent = np.tile(parent, 4)
-    return points, faces, parent
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("psb")
@@ -147,10 +138,9 @@ def main():
         if wanted is not None and model not in wanted:
             continue
         points, faces = read_off(os.path.join(args.psb, "off", model + ".off"))
-        if args.scheme == "midpoint":
-            points, faces, parent = midpoint_split(points, faces, args.levels)
-        elif args.scheme == "loop":
-            points, faces, parent = loop_split(points, faces, args.levels)
+        if args.scheme in ("midpoint", "loop"):
+            split = loop_subdivide if args.scheme == "loop" else subdivide
+            points, faces, parent = four_way_split(points, faces, args.levels, split)
         else:
             points, faces, parent = split_half(points, faces, args.levels, args.half)
         write_off(os.path.join(args.out, "off", model + ".off"), points, faces)
