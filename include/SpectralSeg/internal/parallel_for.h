@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <map>
+#include <memory>
 #include <string>
 
 #ifdef SPECTRALSEG_HAS_TBB
@@ -18,6 +20,22 @@
 
 namespace SpectralSeg {
 namespace internal {
+
+#ifdef SPECTRALSEG_HAS_TBB
+// The calling thread's arena of `threads` threads, made on its first use and
+// kept until the thread ends: making an arena costs about as much as a
+// parallel loop over 50,000 faces, and K-means runs hundreds of such loops.
+// One arena per thread count, none ever replaced, so that a body running
+// in one can use another.
+inline tbb::task_arena& thread_arena(unsigned threads)
+{
+  thread_local std::map<unsigned, std::unique_ptr<tbb::task_arena>> arenas;
+  std::unique_ptr<tbb::task_arena>& arena = arenas[threads];
+  if(!arena)
+    arena.reset(new tbb::task_arena(static_cast<int>(threads)));
+  return *arena;
+}
+#endif
 
 // Runs body(i) for i in [begin, end) on exec.threads() threads. Each index is
 // processed exactly once and bodies must write to disjoint outputs, so results
@@ -32,8 +50,7 @@ void parallel_range(std::size_t begin, std::size_t end, unsigned threads, const 
   threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max(1, tbb::info::default_concurrency())));
   if(threads > 1 && end - begin > 1)
   {
-    tbb::task_arena arena(static_cast<int>(threads));
-    arena.execute([&] {
+    thread_arena(threads).execute([&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end),
                         [&](const tbb::blocked_range<std::size_t>& r) {
                           for(std::size_t i = r.begin(); i != r.end(); ++i)
