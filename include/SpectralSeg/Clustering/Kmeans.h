@@ -121,7 +121,9 @@ SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, 
   std::vector<double> upper(n, std::numeric_limits<double>::infinity()), lower(n, 0.);
   std::vector<double> half_gap(kk), moved(kk);
   std::vector<double> previous(kk * dims);
-  const std::size_t block = 8192;
+  // small blocks: in the late rounds only a few points change cluster, and
+  // only their blocks are summed again
+  const std::size_t block = 1024;
   std::vector<double> block_sum;
   std::vector<std::size_t> block_count;
   for(r.iterations = 0; r.iterations < max_iterations; ++r.iterations)
