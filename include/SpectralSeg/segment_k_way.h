@@ -496,9 +496,11 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       if(specs[i].contrast)
       {
         // the contrast merge down to k segments: its hierarchy cut at k
+        const internal::Contrast_merge_shared shared_merge =
+          internal::contrast_merge_shared(graph, options, internal::default_reference_faces, exec.threads());
         const std::size_t m = internal::merge_clusters_by_contrast(
           graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale,
-          internal::default_reference_faces, c, &histories[i]);
+          internal::default_reference_faces, c, &histories[i], &shared_merge);
         t("merge");
         cuts[i] = internal::prepare_graph_cut_merged(graph, m, specs[i].clusters, options, c, release, exec.threads());
         c.contrast_merge = true;

@@ -6,7 +6,9 @@
 #define SPECTRALSEG_REFINEMENT_MERGE_SEGMENTS_H
 
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Execution.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
@@ -436,8 +438,10 @@ SPECTRALSEG_INLINE std::vector<double> concave_angle_weights(const Dual_graph& g
 /// `reference_faces` faces, or `reference_faces` 0, gets
 /// `concave_angle_weights()` exactly. The averaging stays within connected
 /// components, does not depend on the face order beyond the rounding of
-/// sums, and costs \f$s\f$ passes over the faces.
-SPECTRALSEG_INLINE std::vector<double> concave_angle_weights(const Dual_graph& graph, std::size_t reference_faces)
+/// sums, and costs \f$s\f$ passes over the faces, each on `threads` threads
+/// (0: all hardware threads); the result does not depend on their number.
+SPECTRALSEG_INLINE std::vector<double> concave_angle_weights(const Dual_graph& graph, std::size_t reference_faces,
+                                                         unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = graph.number_of_faces();
@@ -451,20 +455,20 @@ SPECTRALSEG_INLINE std::vector<double> concave_angle_weights(const Dual_graph& g
   std::vector<Eigen::Vector3d> normal(n), next(n);
   for(std::size_t f = 0; f < n; ++f)
     normal[f] = geo.areas[f] * geo.normals[f];
+  const unsigned workers = Execution(threads).threads();
   for(std::size_t step = 0; step < steps; ++step)
   {
-    for(std::size_t f = 0; f < n; ++f)
-    {
+    // each face's sum in the same order on any thread
+    ::SpectralSeg::internal::parallel_range(0, n, workers, [&](std::size_t f) {
       Eigen::Vector3d sum = normal[f];
       graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f),
                                [&](Dual_graph::size_type g, Dual_graph::size_type) { sum += normal[g]; });
       next[f] = 0.25 * sum;
-    }
+    });
     normal.swap(next);
   }
   std::vector<double> w(graph.number_of_edges(), 0.);
-  for(std::size_t d = 0; d < w.size(); ++d)
-  {
+  ::SpectralSeg::internal::parallel_range(0, w.size(), workers, [&](std::size_t d) {
     const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
     // judged as Dual_graph judges the faces' own normals (a zero average
     // stays undefined: no fold)
@@ -472,7 +476,7 @@ SPECTRALSEG_INLINE std::vector<double> concave_angle_weights(const Dual_graph& g
       normal[e.face[0]].normalized(), normal[e.face[1]].normalized(), geo.centroids[e.face[0]], geo.centroids[e.face[1]]);
     if(fold.concave)
       w[d] = fold.angle;
-  }
+  });
   return w;
 }
 #else

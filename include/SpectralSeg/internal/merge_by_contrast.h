@@ -170,7 +170,7 @@ struct Contrast_merge_shared
 template <typename AffinityKernel>
 Contrast_merge_shared contrast_merge_shared(const Weighted_dual_graph& graph,
                                             const Basic_K_way_options<AffinityKernel>& k_way,
-                                            std::size_t reference_faces)
+                                            std::size_t reference_faces, unsigned threads = 1)
 {
   Contrast_merge_shared s;
   if(k_way.crease_angle > 0.)
@@ -179,22 +179,40 @@ Contrast_merge_shared contrast_merge_shared(const Weighted_dual_graph& graph,
     if(Refinement::crease_regions(graph.graph(), k_way.crease_angle, region) > 1)
       s.crease_region = std::move(region);
   }
-  s.angles = Refinement::concave_angle_weights(graph.graph(), reference_faces);
+  s.angles = Refinement::concave_angle_weights(graph.graph(), reference_faces, threads);
   return s;
 }
 
-// The contrast merge of segment_hybrid() on `r.labels`, the K-means
-// clusters of `r.embedding`: the clusters split along closed loops of
+// The contrast merge of segment_hybrid() on `labels`, K-means clusters of
+// the embedding `coordinates`: the clusters split along closed loops of
 // concave creases (`k_way.crease_angle`), made connected and merged by
 // contrast (merge_by_contrast(), with `k_way`'s minimum area fraction and
 // separation scale); every merge down to one segment per component goes
-// into `r.hierarchy` (or, with `keep`, into `*keep`, for
-// hierarchy_from_merges() later), whose answer is where `limit` or
-// `min_segments` stops the merge, as are `r.labels`; its concave contrast
-// measured at `reference_faces` (see merge_by_contrast()); with `shared`,
-// the crease regions and concave angles are those given (made by
-// contrast_merge_shared() with the same settings). Returns the number of
-// segments there.
+// into `history`, whose answer is where `limit` or `min_segments` stops
+// the merge, as are `labels`; its concave contrast measured at
+// `reference_faces` (see merge_by_contrast()), with the crease regions and
+// concave angles of `shared` (made by contrast_merge_shared() with the same
+// settings). Returns the number of segments there. Reads nothing else, so
+// that merges of several clusterings can run side by side.
+template <typename AffinityKernel>
+std::size_t merge_labels_by_contrast(const Weighted_dual_graph& graph,
+                                     const Basic_K_way_options<AffinityKernel>& k_way, std::size_t min_segments,
+                                     double limit, double neck_scale, std::size_t reference_faces,
+                                     const Eigen::MatrixXd& coordinates, std::vector<int>& labels,
+                                     Refinement::internal::Merge_history& history, const Contrast_merge_shared& shared)
+{
+  if(!shared.crease_region.empty())
+    Refinement::split_along_regions(shared.crease_region, labels);
+  Refinement::make_segments_connected(graph.graph(), labels);
+  return merge_by_contrast(graph.graph(), graph.weights(), labels, min_segments, limit, k_way.merge_min_area_fraction,
+                           merge_separation(graph, k_way, coordinates), neck_scale, &history, reference_faces,
+                           &shared.angles, flat_seam_radians(k_way));
+}
+
+// merge_labels_by_contrast() on `r.labels`, the K-means clusters of
+// `r.embedding`, with `shared` (or, without it, the crease regions and
+// concave angles made here); the merges go into `r.hierarchy` (or, with
+// `keep`, into `*keep`, for hierarchy_from_merges() later).
 template <typename AffinityKernel>
 std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
                                        const Basic_K_way_options<AffinityKernel>& k_way, std::size_t min_segments,
@@ -204,15 +222,9 @@ std::size_t merge_clusters_by_contrast(const Weighted_dual_graph& graph,
 {
   const Contrast_merge_shared own =
     shared ? Contrast_merge_shared() : contrast_merge_shared(graph, k_way, reference_faces);
-  const Contrast_merge_shared& s = shared ? *shared : own;
-  if(!s.crease_region.empty())
-    Refinement::split_along_regions(s.crease_region, r.labels);
-  Refinement::make_segments_connected(graph.graph(), r.labels);
   Refinement::internal::Merge_history history;
-  const std::size_t m =
-    merge_by_contrast(graph.graph(), graph.weights(), r.labels, min_segments, limit, k_way.merge_min_area_fraction,
-                      merge_separation(graph, k_way, r.embedding.coordinates), neck_scale, &history,
-                      reference_faces, &s.angles, flat_seam_radians(k_way));
+  const std::size_t m = merge_labels_by_contrast(graph, k_way, min_segments, limit, neck_scale, reference_faces,
+                                                 r.embedding.coordinates, r.labels, history, shared ? *shared : own);
   keep_merges(graph, std::move(history), r, keep);
   return m;
 }

@@ -11,6 +11,7 @@
 #include <SpectralSeg/K_way_options.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/internal/merge_by_contrast.h>
+#include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
 #include <Eigen/Core>
@@ -187,17 +188,16 @@ std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& grap
     coarser_clusterings(r.embedding.coordinates, r.clusters.labels, clusters, sizes, k_way.kmeans_iterations,
                         k_way.kmeans_sample_limit, exec);
   members.insert(members.begin(), std::move(r.clusters));
-  const Contrast_merge_shared shared = contrast_merge_shared(graph, k_way, reference_faces);
-  std::vector<std::vector<int>> answers;
-  std::vector<std::size_t> counts;
+  const Contrast_merge_shared shared = contrast_merge_shared(graph, k_way, reference_faces, exec.threads());
+  // the merges, each on one thread and on its own labels, side by side
+  std::vector<std::vector<int>> answers(members.size());
+  std::vector<std::size_t> counts(members.size());
   std::vector<Refinement::internal::Merge_history> histories(members.size());
-  for(std::size_t i = 0; i < members.size(); ++i)
-  {
-    r.labels = members[i].labels;
-    counts.push_back(merge_clusters_by_contrast(graph, k_way, min_segments, limit, neck_scale, reference_faces, r,
-                                                &histories[i], &shared));
-    answers.push_back(std::move(r.labels));
-  }
+  parallel_range(0, members.size(), exec.threads(), [&](std::size_t i) {
+    answers[i] = members[i].labels;
+    counts[i] = merge_labels_by_contrast(graph, k_way, min_segments, limit, neck_scale, reference_faces,
+                                         r.embedding.coordinates, answers[i], histories[i], shared);
+  });
   const std::size_t kept = members.size() > 1 ? medoid_labelling(answers, counts, graph.graph().geometry().areas) : 0;
   r.labels = std::move(answers[kept]);
   r.clusters = std::move(members[kept]);
