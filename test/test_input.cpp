@@ -243,6 +243,20 @@ TEST_CASE("the mesh is the same whatever the order of the vertices and faces", "
     REQUIRE(corners(a, f) == corners(b, f));
   for(std::size_t t = 0; t < face_of.size(); ++t)
     REQUIRE(sr.face_of_input_face[t] == face_of[t]);
+
+  // and whatever the number of threads of the sorts (the default uses all,
+  // the elephant's 5,558 faces take the parallel Hilbert sort)
+  Mesh c, d;
+  IO::triangle_soup_to_mesh(points, triangles, c, parameters::number_of_threads(1));
+  IO::read_mesh_file(SPECTRALSEG_SOURCE_DIR "/data/elephant.off", d, parameters::number_of_threads(1));
+  for(const Mesh* m : {&c, &d})
+  {
+    REQUIRE(num_faces(*m) == num_faces(a));
+    for(auto v : vertices(a))
+      REQUIRE(a.point(v) == m->point(v));
+    for(std::size_t f = 0; f < num_faces(a); ++f)
+      REQUIRE(corners(a, f) == corners(*m, f));
+  }
 }
 
 TEST_CASE("every shared test mesh is read and measured, or rejected with a message", "[input][shared]")

@@ -9,6 +9,7 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/evaluation.h>
 #include <SpectralSeg/IO/read_mesh_file.h>
+#include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -31,10 +32,11 @@ struct Loaded_mesh
   // Without `keep_mesh` the halfedge mesh is released once the dual graph
   // is built (the graph holds all the geometry the methods and the picture
   // use; only the mesh outputs need the mesh): on a large mesh it is a
-  // twentieth of the peak memory of a segmentation.
-  Loaded_mesh(const std::string& path, const Progress_printer& out, bool keep_mesh = true)
+  // twentieth of the peak memory of a segmentation. The reading's sorts run
+  // on `threads` threads (0: all).
+  Loaded_mesh(const std::string& path, const Progress_printer& out, bool keep_mesh = true, unsigned threads = 0)
   {
-    report = SpectralSeg::IO::read_mesh_file(path, mesh);
+    report = SpectralSeg::IO::read_mesh_file(path, mesh, SpectralSeg::parameters::number_of_threads(threads));
     for(const std::string& w : report.warnings)
       out.message("warning: " + w);
     graph = SpectralSeg::make_dual_graph(mesh);

@@ -49,7 +49,7 @@ inline int run_distance(const Distance_options& o, Progress_printer& out)
 {
   check_outputs({{"--field", o.field}, {"--png", o.png}});
   refuse_inapplicable_options(inapplicable_metric_options(o.cli, o.metric));
-  const Loaded_mesh m(o.mesh, out);
+  const Loaded_mesh m(o.mesh, out, true, o.threads);
   const std::size_t source = m.mesh_face_of_input_face(o.from);
   const SpectralSeg::Execution exec(o.threads, out.callback());
   const SpectralSeg::Metrics::Any_weight metric = make_metric(o.metric);

@@ -174,7 +174,7 @@ inline int run_descriptor(const Descriptor_command_options& o, Progress_printer&
 {
   check_outputs({{"--output", o.output, true}});
   refuse_inapplicable_descriptor_options(o.cli, o.choice);
-  const Loaded_mesh m(o.mesh, out);
+  const Loaded_mesh m(o.mesh, out, true, o.choice.threads);
   const std::string text = descriptor_json(describe_mesh(m, o.choice, out), o.mesh);
   if(o.output == "-")
     std::cout << text;
@@ -208,12 +208,14 @@ inline int run_rank(const Rank_command_options& o, Progress_printer& out)
   }
   if(meshes.empty())
     throw SpectralSeg::Invalid_input("no mesh file (.off, .obj, .ply, .stl) in the folders given");
-  const SpectralSeg::Retrieval::Shape_descriptor query = describe_mesh(Loaded_mesh(o.query, out), o.choice, out);
+  const SpectralSeg::Retrieval::Shape_descriptor query =
+    describe_mesh(Loaded_mesh(o.query, out, true, o.choice.threads), o.choice, out);
   std::vector<SpectralSeg::Retrieval::Shape_descriptor> database;
   for(std::size_t i = 0; i < meshes.size(); ++i)
   {
     out.message("mesh " + std::to_string(i + 1) + "/" + std::to_string(meshes.size()) + ": " + meshes[i]);
-    database.push_back(describe_mesh(Loaded_mesh(meshes[i], out), o.choice, out));
+    database.push_back(
+      describe_mesh(Loaded_mesh(meshes[i], out, true, o.choice.threads), o.choice, out));
   }
   const std::vector<SpectralSeg::Retrieval::Ranked_shape> ranking = SpectralSeg::Retrieval::rank_shapes(query, database);
   std::ostringstream text;

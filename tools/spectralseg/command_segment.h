@@ -357,7 +357,7 @@ inline int run_segment(const Segment_options& o, Progress_printer& out)
   check_mesh_outputs(o.out_mesh, o.parts_dir, {{"--labels", o.labels}, {"--png", o.png}, {"--json", o.json, true}});
   refuse_inapplicable_options(inapplicable_segment_options(o));
 
-  const Loaded_mesh m(o.mesh, out, !o.out_mesh.empty() || !o.parts_dir.empty());
+  const Loaded_mesh m(o.mesh, out, !o.out_mesh.empty() || !o.parts_dir.empty(), o.threads);
   lap("read");
   const std::size_t n = m.graph.number_of_faces();
   if(k > n)

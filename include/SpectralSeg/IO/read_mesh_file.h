@@ -11,6 +11,7 @@
 #include <SpectralSeg/IO/triangle_soup_to_mesh.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/separate_compilation.h>
+#include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -24,21 +25,25 @@ namespace IO {
 namespace internal {
 
 // `read_mesh_file()` on bytes already read (`format`: "off", "obj", "ply"
-// or "stl"): what the fuzz targets call.
+// or "stl"), its sorts on `threads` threads: what the fuzz targets call.
 template <typename Point>
-Mesh_file_report read_mesh_bytes(const File_bytes& file, const std::string& format, CGAL::Surface_mesh<Point>& mesh)
+Mesh_file_report read_mesh_bytes(const File_bytes& file, const std::string& format, CGAL::Surface_mesh<Point>& mesh,
+                                 unsigned threads = 1)
 {
   mesh.clear();
   Polygon_soup soup = read_polygon_soup(file, format);
-  Mesh_file_report report = polygon_soup_to_mesh(soup, "'" + file.path + "'", mesh, &triangulate_polygon<Point>);
+  Mesh_file_report report =
+    polygon_soup_to_mesh(soup, "'" + file.path + "'", mesh, &triangulate_polygon<Point>, threads);
   report.path = file.path;
   return report;
 }
 
 #if SPECTRALSEG_DEFAULT_INSTANCES
 SPECTRALSEG_INSTANTIATE Mesh_file_report read_mesh_bytes<CGAL::Epick::Point_3>(const File_bytes&, const std::string&,
-                                                                             CGAL::Surface_mesh<CGAL::Epick::Point_3>&);
+                                                                             CGAL::Surface_mesh<CGAL::Epick::Point_3>&,
+                                                                             unsigned);
 #endif
+
 
 } // namespace internal
 /// \endcond
@@ -96,16 +101,30 @@ SPECTRALSEG_INSTANTIATE Mesh_file_report read_mesh_bytes<CGAL::Epick::Point_3>(c
 /// written in the file's face order with `write_face_values()`.
 ///
 /// \tparam Point a CGAL point type
+/// \tparam NamedParameters a sequence of named parameters
+/// \param path the file
+/// \param mesh receives the mesh (cleared first)
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads of the sorts (welding, repeated faces, the Hilbert order); 0 means all hardware threads. The mesh does not depend on it}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \throws Io_error if the file is missing, empty, of an unknown format or
 ///         malformed (the message names the line, byte or element)
 /// \throws Invalid_input if it holds a non-finite coordinate, no usable face
 ///         or mostly repeated faces
-template <typename Point>
-Mesh_file_report read_mesh_file(const std::string& path, CGAL::Surface_mesh<Point>& mesh)
+template <typename Point, typename NamedParameters = parameters::Default_named_parameters>
+Mesh_file_report read_mesh_file(const std::string& path, CGAL::Surface_mesh<Point>& mesh,
+                                const NamedParameters& np = parameters::default_values())
 {
   mesh.clear();
   const std::string format = internal::mesh_file_format(path);
-  return internal::read_mesh_bytes(internal::read_file_bytes(path), format, mesh);
+  return internal::read_mesh_bytes(internal::read_file_bytes(path), format, mesh, internal::reading_threads(np));
 }
 
 } // namespace IO

@@ -11,8 +11,10 @@
 #include <SpectralSeg/IO/internal/oriented_manifold_soup_to_mesh.h>
 #include <SpectralSeg/IO/internal/repair_polygon_soup.h>
 #include <SpectralSeg/IO/internal/spatial_order.h>
+#include <SpectralSeg/Execution.h>
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/separate_compilation.h>
+#include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -32,13 +34,26 @@ namespace IO {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// The threads of the named parameter `number_of_threads` (0, the default:
+// all hardware threads).
+template <typename NamedParameters>
+unsigned reading_threads(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return Execution(static_cast<unsigned>(
+                     choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_threads), 0)))
+    .threads();
+}
+
 // The repairs of read_mesh_file() on the soup of a file (or of arrays):
 // `name` names the soup in the messages ("'path'"), `triangulate` splits
 // polygons into triangles (see clean_and_triangulate_faces()). Fills every
-// field of the report but `path`.
+// field of the report but `path`. Its sorts run on `threads` threads (the
+// same mesh on any number).
 template <typename Point, typename Triangulate>
 Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& name, CGAL::Surface_mesh<Point>& mesh,
-                                      const Triangulate& triangulate)
+                                      const Triangulate& triangulate, unsigned threads = 1)
 {
   Mesh_file_report report;
   mesh.clear();
@@ -48,9 +63,9 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
   if(soup.number_of_faces() == 0)
     throw Invalid_input(name + " holds no face");
 
-  const std::vector<std::size_t> weld = weld_identical_vertices(soup.points);
+  const std::vector<std::size_t> weld = weld_identical_vertices(soup.points, threads);
   report.merged_vertices = report.input_vertices - soup.points.size();
-  Clean_triangles clean = clean_and_triangulate_faces<Point>(soup, weld, report, triangulate);
+  Clean_triangles clean = clean_and_triangulate_faces<Point>(soup, weld, report, triangulate, threads);
   if(clean.triangles.empty())
     throw Invalid_input(name + " holds no usable face (every face has fewer than three distinct vertices)");
   const std::size_t distinct = report.input_faces - report.invalid_faces - report.duplicate_faces;
@@ -90,7 +105,7 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
   report.split_vertices = points.size() - points_before;
   // vertices and faces along Hilbert curves: neighbours in the mesh become
   // neighbours in memory, and the file's order stops mattering
-  const std::vector<std::size_t> new_triangle = sort_along_hilbert_curve(points, triangles);
+  const std::vector<std::size_t> new_triangle = sort_along_hilbert_curve(points, triangles, threads);
   // CGAL's construction is quadratic in a vertex's degree; the mesh it
   // would make is made directly when the soup allows it (always, unless
   // orienting it failed)
@@ -150,18 +165,30 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
 /// `triangles`. `Mesh_file_report::path` is left empty.
 ///
 /// \tparam Point a CGAL point type
+/// \tparam NamedParameters a sequence of named parameters
 /// \param points the vertex coordinates
 /// \param triangles three indices into `points` per triangle
 /// \param mesh receives the mesh (cleared first), its vertices and faces
 ///        along Hilbert curves as in `read_mesh_file()`; its face `f` comes
 ///        from triangle `report.input_face_of_face[f]`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads of the sorts (welding, repeated triangles, the Hilbert order); 0 means all hardware threads. The mesh does not depend on it}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
 /// \throws Invalid_input if a coordinate is not finite, an index is not
 ///         below `points.size()`, there is no triangle, no usable triangle,
 ///         or more repeated triangles than distinct ones
-template <typename Point>
+template <typename Point, typename NamedParameters = parameters::Default_named_parameters>
 Mesh_file_report triangle_soup_to_mesh(const std::vector<std::array<double, 3>>& points,
                                        const std::vector<std::array<std::size_t, 3>>& triangles,
-                                       CGAL::Surface_mesh<Point>& mesh)
+                                       CGAL::Surface_mesh<Point>& mesh,
+                                       const NamedParameters& np = parameters::default_values())
 {
   mesh.clear();
   internal::Polygon_soup soup;
@@ -186,14 +213,14 @@ Mesh_file_report triangle_soup_to_mesh(const std::vector<std::array<double, 3>>&
   // Triangles need no triangulation: after welding they have three
   // distinct vertices or are dropped.
   const auto no_polygons = [](const std::vector<Point>&) { return std::vector<std::array<std::size_t, 3>>(); };
-  return internal::polygon_soup_to_mesh(soup, "the triangle soup", mesh, no_polygons);
+  return internal::polygon_soup_to_mesh(soup, "the triangle soup", mesh, no_polygons, internal::reading_threads(np));
 }
 
 /// \cond SKIP_IN_MANUAL
 #if SPECTRALSEG_DEFAULT_INSTANCES
 SPECTRALSEG_INSTANTIATE Mesh_file_report triangle_soup_to_mesh<CGAL::Epick::Point_3>(
   const std::vector<std::array<double, 3>>&, const std::vector<std::array<std::size_t, 3>>&,
-  CGAL::Surface_mesh<CGAL::Epick::Point_3>&);
+  CGAL::Surface_mesh<CGAL::Epick::Point_3>&, const parameters::Default_named_parameters&);
 #endif
 /// \endcond
 

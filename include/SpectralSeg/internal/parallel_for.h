@@ -14,6 +14,7 @@
 #ifdef SPECTRALSEG_HAS_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 #endif
@@ -64,6 +65,26 @@ void parallel_range(std::size_t begin, std::size_t end, unsigned threads, const 
 #endif
   for(std::size_t i = begin; i != end; ++i)
     body(i);
+}
+
+// Sorts [first, last) by `less` on `threads` threads. `less` must be a
+// strict total order on the values (no two of them equivalent): the sorted
+// sequence is then the only one, whatever the algorithm and the number of
+// threads.
+template <typename Iterator, typename Less>
+void parallel_sort(Iterator first, Iterator last, const Less& less, unsigned threads)
+{
+#ifdef SPECTRALSEG_HAS_TBB
+  threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max(1, tbb::info::default_concurrency())));
+  if(threads > 1)
+  {
+    thread_arena(threads).execute([&] { tbb::parallel_sort(first, last, less); });
+    return;
+  }
+#else
+  (void)threads;
+#endif
+  std::sort(first, last, less);
 }
 
 // Same as parallel_range over [0, n), cut into batches so that progress is

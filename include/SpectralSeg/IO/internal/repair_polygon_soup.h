@@ -10,11 +10,13 @@
 #include <SpectralSeg/IO/Mesh_file_report.h>
 #include <SpectralSeg/IO/internal/Polygon_soup.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <iterator>
 #include <tuple>
 #include <vector>
@@ -26,18 +28,21 @@ namespace internal {
 
 // Merges the points with identical coordinates: returns, for each point of
 // the soup, its index among the merged points, which replace `points`. The
-// merged points keep the order of their first occurrence. O(n log n).
-SPECTRALSEG_INLINE std::vector<std::size_t> weld_identical_vertices(std::vector<std::array<double, 3>>& points)
+// merged points keep the order of their first occurrence. O(n log n), the
+// sort on `threads` threads (the same result on any number).
+SPECTRALSEG_INLINE std::vector<std::size_t> weld_identical_vertices(std::vector<std::array<double, 3>>& points,
+                                                                    unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = points.size();
   std::vector<std::size_t> order(n);
   for(std::size_t v = 0; v < n; ++v)
     order[v] = v;
-  // equal coordinates end up together, the first occurrence first
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+  // equal coordinates end up together, the first occurrence first (ties
+  // by index: a total order)
+  ::SpectralSeg::internal::parallel_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return points[a] < points[b] || (!(points[b] < points[a]) && a < b);
-  });
+  }, threads);
   std::vector<std::size_t> first(n); // each point's first occurrence
   for(std::size_t i = 0; i < n; ++i)
     first[order[i]] = (i > 0 && !(points[order[i - 1]] < points[order[i]])) ? first[order[i - 1]] : order[i];
@@ -74,10 +79,12 @@ struct Clean_triangles
 // distinct vertices and repeats of an earlier face's vertex set, and
 // triangulates polygons with `triangulate` (a polygon's positions, as
 // `Point`s, to triangles of indices into them: triangulate_polygon() of
-// triangulate_polygon.h); counts each in `report`.
+// triangulate_polygon.h); counts each in `report`. The faces of three
+// vertices are sorted on `threads` threads (the same result on any number).
 template <typename Point, typename Triangulate>
 Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std::vector<std::size_t>& weld,
-                                            Mesh_file_report& report, const Triangulate& triangulate)
+                                            Mesh_file_report& report, const Triangulate& triangulate,
+                                            unsigned threads = 1)
 {
   const std::size_t faces = soup.number_of_faces();
   Clean_triangles out;
@@ -139,7 +146,9 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
     }
     if(faces < (std::size_t(1) << 32))
     {
-      std::sort(sorted.begin(), sorted.end());
+      // the file face last: no two entries are equal
+      ::SpectralSeg::internal::parallel_sort(sorted.begin(), sorted.end(),
+                                             std::less<std::array<std::uint32_t, 4>>(), threads);
       for(std::size_t i = 0; i < sorted.size(); ++i)
         order[i] = sorted[i][3];
     }

@@ -5,6 +5,7 @@
 #ifndef SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
 #define SPECTRALSEG_IO_INTERNAL_SPATIAL_ORDER_H
 
+#include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
 #include <CGAL/Hilbert_sort_median_3.h>
@@ -64,11 +65,59 @@ public:
 // positions (CGAL's median policy: the curve adapts to where the points are).
 // The keys themselves are sorted, not indices into them: the median splits
 // then read memory in sequence instead of jumping through an index array.
-SPECTRALSEG_INLINE std::vector<std::size_t> hilbert_order(std::vector<Spatial_order_key>& keys)
+// With several threads the independent splits of the curve's first level
+// run side by side and its eight octants are sorted in parallel, as in
+// CGAL's parallel Hilbert sort; every split and every octant's sort is the
+// sequential sort's, on the same keys, so the order does not depend on the
+// number of threads.
+SPECTRALSEG_INLINE std::vector<std::size_t> hilbert_order(std::vector<Spatial_order_key>& keys, unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
-  const CGAL::Hilbert_sort_median_3<Spatial_order_traits, CGAL::Sequential_tag> sort{Spatial_order_traits()};
-  sort(keys.begin(), keys.end());
+  typedef CGAL::Hilbert_sort_median_3<Spatial_order_traits, CGAL::Sequential_tag> Sort;
+  const Sort sort{Spatial_order_traits()};
+  if(threads < 2 || keys.size() <= 2048)
+    sort(keys.begin(), keys.end());
+  else
+  {
+    // the first level of Sort's recursive_sort<0, false, false, false>:
+    // axes x = 0, y = 1, z = 2, none reversed
+    typedef std::vector<Spatial_order_key>::iterator It;
+    typedef Spatial_order_traits T;
+    const T k;
+    using CGAL::internal::hilbert_split;
+    using CGAL::internal::Hilbert_cmp_3;
+    const It m0 = keys.begin(), m8 = keys.end();
+    const It m4 = hilbert_split(m0, m8, Hilbert_cmp_3<T, 0, false>(k));
+    It m1, m2, m3, m5, m6, m7;
+    ::SpectralSeg::internal::parallel_range(0, 2, threads, [&](std::size_t i) {
+      if(i == 0)
+        m2 = hilbert_split(m0, m4, Hilbert_cmp_3<T, 1, false>(k));
+      else
+        m6 = hilbert_split(m4, m8, Hilbert_cmp_3<T, 1, true>(k));
+    });
+    ::SpectralSeg::internal::parallel_range(0, 4, threads, [&](std::size_t i) {
+      switch(i)
+      {
+      case 0: m1 = hilbert_split(m0, m2, Hilbert_cmp_3<T, 2, false>(k)); break;
+      case 1: m3 = hilbert_split(m2, m4, Hilbert_cmp_3<T, 2, true>(k)); break;
+      case 2: m5 = hilbert_split(m4, m6, Hilbert_cmp_3<T, 2, false>(k)); break;
+      default: m7 = hilbert_split(m6, m8, Hilbert_cmp_3<T, 2, true>(k)); break;
+      }
+    });
+    ::SpectralSeg::internal::parallel_range(0, 8, threads, [&](std::size_t i) {
+      switch(i)
+      {
+      case 0: sort.recursive_sort<2, false, false, false>(m0, m1); break;
+      case 1: sort.recursive_sort<1, false, false, false>(m1, m2); break;
+      case 2: sort.recursive_sort<1, false, false, false>(m2, m3); break;
+      case 3: sort.recursive_sort<0, false, true, true>(m3, m4); break;
+      case 4: sort.recursive_sort<0, false, true, true>(m4, m5); break;
+      case 5: sort.recursive_sort<1, true, false, true>(m5, m6); break;
+      case 6: sort.recursive_sort<1, true, false, true>(m6, m7); break;
+      default: sort.recursive_sort<2, true, true, false>(m7, m8); break;
+      }
+    });
+  }
   std::vector<std::size_t> order(keys.size());
   for(std::size_t i = 0; i < keys.size(); ++i)
     order[i] = keys[i].index;
@@ -102,17 +151,19 @@ std::vector<std::size_t> apply_order(std::vector<T>& items, const std::vector<st
 // copies that splitting a non-manifold vertex makes) keep their relative
 // order; everything else ends in an order that does not depend on the input
 // order, so that the memory access patterns of what follows, and its
-// results, do not either.
+// results, do not either. Sorted on `threads` threads (the same order on
+// any number).
 template <typename Point>
 std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
-                                                  std::vector<std::array<std::size_t, 3>>& triangles)
+                                                  std::vector<std::array<std::size_t, 3>>& triangles,
+                                                  unsigned threads = 1)
 {
   std::vector<Spatial_order_key> keys(points.size());
   for(std::size_t v = 0; v < points.size(); ++v)
     keys[v] = {{{CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()), CGAL::to_double(points[v].z())}},
                {{v, 0, 0}},
                v};
-  const std::vector<std::size_t> new_vertex = apply_order(points, hilbert_order(keys));
+  const std::vector<std::size_t> new_vertex = apply_order(points, hilbert_order(keys, threads));
 
   keys.assign(triangles.size(), Spatial_order_key());
   for(std::size_t t = 0; t < triangles.size(); ++t)
@@ -132,7 +183,7 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
     k.tie = tri;
     k.index = t;
   }
-  return apply_order(triangles, hilbert_order(keys));
+  return apply_order(triangles, hilbert_order(keys, threads));
 }
 
 } // namespace internal
