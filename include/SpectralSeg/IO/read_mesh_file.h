@@ -44,7 +44,6 @@ SPECTRALSEG_INSTANTIATE Mesh_file_report read_mesh_bytes<CGAL::Epick::Point_3>(c
                                                                              unsigned);
 #endif
 
-
 } // namespace internal
 /// \endcond
 
