@@ -10,8 +10,8 @@
 #include <SpectralSeg/IO/internal/triangulate_polygon.h>
 #include <SpectralSeg/IO/triangle_soup_to_mesh.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/execution_from.h>
 #include <SpectralSeg/internal/separate_compilation.h>
-#include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -123,7 +123,8 @@ Mesh_file_report read_mesh_file(const std::string& path, CGAL::Surface_mesh<Poin
 {
   mesh.clear();
   const std::string format = internal::mesh_file_format(path);
-  return internal::read_mesh_bytes(internal::read_file_bytes(path), format, mesh, internal::reading_threads(np));
+  return internal::read_mesh_bytes(internal::read_file_bytes(path), format, mesh,
+                                   SpectralSeg::internal::execution_from(np).threads());
 }
 
 } // namespace IO

@@ -11,10 +11,9 @@
 #include <SpectralSeg/IO/internal/oriented_manifold_soup_to_mesh.h>
 #include <SpectralSeg/IO/internal/repair_polygon_soup.h>
 #include <SpectralSeg/IO/internal/spatial_order.h>
-#include <SpectralSeg/Execution.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/execution_from.h>
 #include <SpectralSeg/internal/separate_compilation.h>
-#include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -33,18 +32,6 @@ namespace IO {
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
-
-// The threads of the named parameter `number_of_threads` (0, the default:
-// all hardware threads).
-template <typename NamedParameters>
-unsigned reading_threads(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return Execution(static_cast<unsigned>(
-                     choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_threads), 0)))
-    .threads();
-}
 
 // The repairs of read_mesh_file() on the soup of a file (or of arrays):
 // `name` names the soup in the messages ("'path'"), `triangulate` splits
@@ -213,7 +200,8 @@ Mesh_file_report triangle_soup_to_mesh(const std::vector<std::array<double, 3>>&
   // Triangles need no triangulation: after welding they have three
   // distinct vertices or are dropped.
   const auto no_polygons = [](const std::vector<Point>&) { return std::vector<std::array<std::size_t, 3>>(); };
-  return internal::polygon_soup_to_mesh(soup, "the triangle soup", mesh, no_polygons, internal::reading_threads(np));
+  return internal::polygon_soup_to_mesh(soup, "the triangle soup", mesh, no_polygons,
+                                        SpectralSeg::internal::execution_from(np).threads());
 }
 
 /// \cond SKIP_IN_MANUAL

@@ -11,6 +11,7 @@
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Metrics/normalize_weights.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
+#include <SpectralSeg/internal/execution_from.h>
 #include <SpectralSeg/named_parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -21,18 +22,6 @@ namespace SpectralSeg {
 namespace internal {
 
 struct No_nearest_source_map {};
-
-template <typename NamedParameters>
-Execution execution_from(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const unsigned threads = static_cast<unsigned>(
-    choose_parameter(get_parameter(np, SpectralSeg::internal_np::number_of_threads), 0));
-  Progress_callback progress =
-    choose_parameter(get_parameter(np, SpectralSeg::internal_np::progress_callback), Progress_callback());
-  return Execution(threads, progress);
-}
 
 template <typename Metric>
 std::vector<double> metric_weights(const Metric& metric, const Dual_graph& graph, const Execution& exec)

@@ -23,6 +23,12 @@ namespace SpectralSeg {
 namespace internal {
 
 #ifdef SPECTRALSEG_HAS_TBB
+// At most as many threads as TBB allows (more would only print a warning).
+inline unsigned usable_threads(unsigned threads)
+{
+  return std::min<unsigned>(threads, static_cast<unsigned>(std::max(1, tbb::info::default_concurrency())));
+}
+
 // The calling thread's arena of `threads` threads, made on its first use and
 // kept until the thread ends: making an arena costs about as much as a
 // parallel loop over 50,000 faces, and K-means runs hundreds of such loops.
@@ -47,8 +53,7 @@ void parallel_range(std::size_t begin, std::size_t end, unsigned threads, const 
   if(end <= begin)
     return;
 #ifdef SPECTRALSEG_HAS_TBB
-  // More threads than TBB allows would only print a warning: cap them.
-  threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max(1, tbb::info::default_concurrency())));
+  threads = usable_threads(threads);
   if(threads > 1 && end - begin > 1)
   {
     thread_arena(threads).execute([&] {
@@ -75,7 +80,7 @@ template <typename Iterator, typename Less>
 void parallel_sort(Iterator first, Iterator last, const Less& less, unsigned threads)
 {
 #ifdef SPECTRALSEG_HAS_TBB
-  threads = std::min<unsigned>(threads, static_cast<unsigned>(std::max(1, tbb::info::default_concurrency())));
+  threads = usable_threads(threads);
   if(threads > 1)
   {
     thread_arena(threads).execute([&] { tbb::parallel_sort(first, last, less); });
