@@ -81,10 +81,16 @@ SPECTRALSEG_INLINE Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinat
 {
   Eigen::MatrixXd proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), coordinates.cols());
   std::vector<double> count(m, 0.);
-  for(std::size_t f = 0; f < labels.size(); ++f) // in face order: thread-independent
+  for(int l : labels)
+    count[std::size_t(l)] += 1.;
+  // column after column, as the coordinates are stored; each sum in face
+  // order: thread-independent
+  for(Eigen::Index j = 0; j < coordinates.cols(); ++j)
   {
-    proxies.row(labels[f]) += coordinates.row(static_cast<Eigen::Index>(f));
-    count[std::size_t(labels[f])] += 1.;
+    const double* x = coordinates.col(j).data();
+    double* sum = proxies.col(j).data();
+    for(std::size_t f = 0; f < labels.size(); ++f)
+      sum[labels[f]] += x[f];
   }
   for(std::size_t c = 0; c < m; ++c)
     proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
