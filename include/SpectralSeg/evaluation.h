@@ -47,7 +47,7 @@ SPECTRALSEG_INLINE Compact_labels compact(const std::vector<int>& labels)
   ids.reserve(64);
   for(std::size_t f = 0; f < labels.size(); ++f)
   {
-    const auto it = ids.emplace(labels[f], c.count);
+    const auto it = ids.try_emplace(labels[f], c.count);
     if(it.second)
       ++c.count;
     c.index[f] = it.first->second;
@@ -145,7 +145,7 @@ SPECTRALSEG_INLINE Contingency_table contingency_table(const std::vector<int>& a
     std::unordered_map<std::uint64_t, std::uint32_t> slot;
     slot.reserve(std::min<std::size_t>(n, 1u << 20));
     for(std::size_t f = 0; f < n; ++f)
-      add(slot.emplace((std::uint64_t(ca.index[f]) << 32) | cb.index[f], none).first->second, f);
+      add(slot.try_emplace((std::uint64_t(ca.index[f]) << 32) | cb.index[f], none).first->second, f);
   }
   t.row_count.assign(ca.count, 0);
   t.column_count.assign(cb.count, 0);

@@ -54,7 +54,7 @@ SPECTRALSEG_INLINE double concave_normalized_cut(const Dual_graph& graph, const 
   std::map<int, std::size_t> dense;
   std::vector<std::size_t> segment_of(labels.size());
   for(std::size_t f = 0; f < labels.size(); ++f)
-    segment_of[f] = dense.emplace(labels[f], dense.size()).first->second;
+    segment_of[f] = dense.try_emplace(labels[f], dense.size()).first->second;
   std::vector<double> cut(dense.size(), 0.), vol(dense.size(), 0.);
   for(std::size_t d = 0; d < graph.number_of_edges(); ++d) // in edge order: thread-independent
   {

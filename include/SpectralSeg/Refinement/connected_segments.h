@@ -157,7 +157,7 @@ SPECTRALSEG_INLINE std::size_t make_segments_connected(const Dual_graph& graph, 
   std::map<int, int> renumber;
   for(int& l : labels)
   {
-    auto it = renumber.emplace(l, int(renumber.size())).first;
+    auto it = renumber.try_emplace(l, int(renumber.size())).first;
     l = it->second;
   }
   return renumber.size();

@@ -103,7 +103,7 @@ SPECTRALSEG_INLINE std::size_t split_along_regions(const std::vector<int>& regio
                         std::to_string(labels.size()) + " labels");
   std::map<std::pair<int, int>, int> combined;
   for(std::size_t f = 0; f < labels.size(); ++f)
-    labels[f] = combined.emplace(std::make_pair(labels[f], region[f]), int(combined.size())).first->second;
+    labels[f] = combined.try_emplace(std::make_pair(labels[f], region[f]), int(combined.size())).first->second;
   return combined.size();
 }
 #else

@@ -151,7 +151,7 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
   // dense labels 0 .. s-1 in order of first face
   std::map<int, int> dense;
   for(int& l : labels)
-    l = dense.emplace(l, int(dense.size())).first->second;
+    l = dense.try_emplace(l, int(dense.size())).first->second;
   const std::size_t s = dense.size();
   if(history)
   {
@@ -194,15 +194,28 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
   std::vector<Segment_moments> moments(coordinates ? s : 0);
   if(coordinates)
   {
+    const Eigen::Index dims = coordinates->cols();
     for(Segment_moments& m : moments)
-      m.sum = Eigen::RowVectorXd::Zero(coordinates->cols());
-    for(std::size_t f = 0; f < n; ++f) // in face order: thread-independent
+      m.sum = Eigen::RowVectorXd::Zero(dims);
+    const std::vector<double>& areas = graph.geometry().areas;
+    // column after column, as the coordinates are stored; every sum still
+    // in face order (thread-independent), each face's squared norm summed
+    // over its coordinates in order
+    std::vector<double> norm(n, 0.);
+    for(Eigen::Index j = 0; j < dims; ++j)
+    {
+      const double* column = coordinates->col(j).data();
+      for(std::size_t f = 0; f < n; ++f)
+      {
+        moments[std::size_t(labels[f])].sum[j] += areas[f] * column[f];
+        norm[f] = j == 0 ? column[f] * column[f] : norm[f] + column[f] * column[f];
+      }
+    }
+    for(std::size_t f = 0; f < n; ++f)
     {
       Segment_moments& m = moments[std::size_t(labels[f])];
-      const double a = graph.geometry().areas[f];
-      m.sum += a * coordinates->row(static_cast<Eigen::Index>(f));
-      m.squares += a * coordinates->row(static_cast<Eigen::Index>(f)).squaredNorm();
-      m.area += a;
+      m.squares += areas[f] * norm[f];
+      m.area += areas[f];
     }
   }
   std::vector<std::size_t> answer; // `target` where the answer ends
@@ -297,7 +310,7 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
     target = std::move(answer);
   std::map<int, int> renumber;
   for(int& l : labels)
-    l = renumber.emplace(int(target[std::size_t(l)]), int(renumber.size())).first->second;
+    l = renumber.try_emplace(int(target[std::size_t(l)]), int(renumber.size())).first->second;
   return renumber.size();
 }
 

@@ -92,11 +92,17 @@ SPECTRALSEG_INLINE std::vector<Clustering::Kmeans_result> coarser_clusterings(
   const std::size_t n = base.size();
   std::vector<double> weight(c, 0.);
   Eigen::MatrixXd centre = Eigen::MatrixXd::Zero(Eigen::Index(c), points.cols());
-  for(std::size_t f = 0; f < n; ++f) // in point order: thread-independent
-  {
+  // column after column, as the points are stored; each sum in point
+  // order (thread-independent)
+  for(std::size_t f = 0; f < n; ++f)
     weight[std::size_t(base[f])] += 1.;
-    centre.row(base[f]) += points.row(Eigen::Index(f));
+  for(Eigen::Index j = 0; j < points.cols(); ++j)
+  {
+    const double* column = points.col(j).data();
+    for(std::size_t f = 0; f < n; ++f)
+      centre(base[f], j) += column[f];
   }
+  std::vector<double> squared(n); // a point's squared distance to its joined centroid
   std::vector<int> joined(c); // what each cluster of `base` became
   std::vector<char> alive(c, 0);
   std::size_t live = 0;
@@ -142,10 +148,19 @@ SPECTRALSEG_INLINE std::vector<Clustering::Kmeans_result> coarser_clusterings(
     // the point nearest each joined centroid seeds K-means
     std::vector<std::size_t> nearest(c, n);
     std::vector<double> distance(c, std::numeric_limits<double>::infinity());
+    for(Eigen::Index j = 0; j < points.cols(); ++j) // summed over the coordinates in order
+    {
+      const double* column = points.col(j).data();
+      for(std::size_t f = 0; f < n; ++f)
+      {
+        const double t = column[f] - centre(joined[std::size_t(base[f])], j);
+        squared[f] = j == 0 ? t * t : squared[f] + t * t;
+      }
+    }
     for(std::size_t f = 0; f < n; ++f)
     {
       const std::size_t a = std::size_t(joined[std::size_t(base[f])]);
-      const double d = (points.row(Eigen::Index(f)) - centre.row(Eigen::Index(a))).squaredNorm();
+      const double d = squared[f];
       if(d < distance[a])
       {
         distance[a] = d;
