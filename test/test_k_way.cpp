@@ -1312,6 +1312,16 @@ TEST_CASE("kmeans skips points by bounds and still gives Lloyd's labels", "[kmea
     elsewhere += nearest != sampled.labels[i];
   }
   CHECK(elsewhere == 0);
+  // one round on all the points after the subsample's: the same start as
+  // `sampled`, stopped after one round on every point
+  const Clustering::Kmeans_result once = Clustering::kmeans(points, k, seeds, 300, Execution(2), 500, 1);
+  CHECK(once.iterations == 1);
+  CHECK_FALSE(once.converged);
+  CHECK(once.labels.size() == n);
+  CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(1), 500, 1).labels == once.labels);
+  CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(2), 500, 300).labels == sampled.labels);
+  // without a sample limit, full_rounds does not apply
+  CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(2), 0, 1).labels == fast.labels);
   // more centroids than the distance loop's block (64): the same rule
   std::vector<std::size_t> many;
   for(std::size_t c = 0; c < 70; ++c)

@@ -294,12 +294,18 @@ SPECTRALSEG_INLINE void lloyd(const double* p, std::size_t n, std::size_t dims, 
 /// seeds, and then on all the points from the centroids found: the answer
 /// is still a fixed point of Lloyd's rounds on all the points, reached in
 /// fewer rounds over all of them. `Kmeans_result::iterations` counts the
-/// rounds on all the points.
+/// rounds on all the points. With `full_rounds` above 0 and a subsample
+/// taken, at most that many rounds run on all the points after the
+/// subsample's (1: every point assigned to the subsample's centroids, which
+/// then move to their points' means once); the labels need not be a fixed
+/// point then, and `Kmeans_result::converged` is true only when a round on
+/// all the points changed none.
 ///
 /// \throws Invalid_input if `k` is 0 or exceeds the number of points
 SPECTRALSEG_INLINE Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size_t k,
                                         std::vector<std::size_t> seeds = {}, std::size_t max_iterations = 100,
-                                        const Execution& exec = Execution(), std::size_t sample_limit = 0)
+                                        const Execution& exec = Execution(), std::size_t sample_limit = 0,
+                                        std::size_t full_rounds = 0)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t n = static_cast<std::size_t>(points.rows());
@@ -328,6 +334,8 @@ SPECTRALSEG_INLINE Kmeans_result kmeans(const Eigen::MatrixXd& points, std::size
         sample[i * dims + j] = points(Eigen::Index(i * stride), Eigen::Index(j));
     });
     internal::lloyd(sample.data(), m, dims, dims, 1, r, max_iterations, exec);
+    if(full_rounds > 0)
+      max_iterations = std::min(max_iterations, full_rounds);
   }
   internal::lloyd(points.data(), n, dims, 1, n, r, max_iterations, exec);
   return r;
