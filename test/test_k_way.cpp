@@ -1318,6 +1318,19 @@ TEST_CASE("kmeans skips points by bounds and still gives Lloyd's labels", "[kmea
   CHECK(once.iterations == 1);
   CHECK_FALSE(once.converged);
   CHECK(once.labels.size() == n);
+  {
+    // the centroids moved once, to the means of the points assigned to them
+    Eigen::MatrixXd mean = Eigen::MatrixXd::Zero(Eigen::Index(k), Eigen::Index(dims));
+    std::vector<double> members(k, 0.);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      mean.row(once.labels[i]) += points.row(Eigen::Index(i));
+      members[std::size_t(once.labels[i])] += 1.;
+    }
+    for(std::size_t c = 0; c < k; ++c)
+      if(members[c] > 0.)
+        CHECK((mean.row(Eigen::Index(c)) / members[c] - once.centroids.row(Eigen::Index(c))).norm() < 1e-9);
+  }
   CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(1), 500, 1).labels == once.labels);
   CHECK(Clustering::kmeans(points, k, seeds, 300, Execution(2), 500, 300).labels == sampled.labels);
   // without a sample limit, full_rounds does not apply

@@ -84,9 +84,9 @@ SPECTRALSEG_INLINE std::size_t medoid_labelling(const std::vector<std::vector<in
 // (descending, each below c), and K-means is run again from the point
 // nearest each joined centroid (ties: the smallest index); above
 // `sample_limit` points, on the subsample and then one round on every
-// point (these clusterings only vote for the typical answer: 13 to 59
-// rounds on every point to a fixed point were two thirds of the merge
-// stage at 832,000 faces). One K-means result per size.
+// point (these clusterings only vote for the typical answer; running
+// them to a fixed point on every point was most of the merge stage on
+// large meshes, doc/benchmarks.md). One K-means result per size.
 SPECTRALSEG_INLINE std::vector<Clustering::Kmeans_result> coarser_clusterings(
     const Eigen::MatrixXd& points, const std::vector<int>& base, std::size_t c, const std::vector<std::size_t>& sizes,
     std::size_t max_iterations, std::size_t sample_limit, const Execution& exec)
