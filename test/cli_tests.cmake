@@ -400,6 +400,9 @@ run_cli(2 "--over-segmentations: '0'" segment ${WORK}/quads.off --k auto --over-
 run_cli(2 "error: --over-segmentations cannot be used here: it applies to --k auto" segment ${WORK}/quads.off
         --k 2 --over-segmentations 5 --labels ${WORK}/q.seg)
 run_cli(2 "--vsi-fraction: 'nan'" distance ${WORK}/quads.off --from 0 --vsi-fraction nan --field ${WORK}/q.txt)
+run_cli(2 "--max-measured-faces: '-1'" distance ${WORK}/quads.off --from 0 --max-measured-faces -1 --field ${WORK}/q.txt)
+run_cli(2 "error: --max-measured-faces cannot be used here: --metric geodesic casts no rays" distance ${WORK}/quads.off
+        --from 0 --metric geodesic --max-measured-faces 10 --field ${WORK}/q.txt)
 run_cli(2 "--weights: '1,,1': item ''" distance ${WORK}/quads.off --from 0 --weights 1,,1 --field ${WORK}/q.txt)
 run_cli(2 "--weights: '1e308,1e308,1e308'" distance ${WORK}/quads.off --from 0 --weights 1e308,1e308,1e308 --field ${WORK}/q.txt)
 # (through sh: CMake drops empty arguments)

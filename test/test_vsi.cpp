@@ -114,6 +114,31 @@ TEST_CASE("reference points from a quarter of the faces: the others take their n
   }
 }
 
+TEST_CASE("reference points: at most max_measured_faces faces cast their cone", "[vsi]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::sphere(2., 24, 48));
+  const Dual_graph g = make_dual_graph(m);
+  const std::size_t n = g.number_of_faces();
+  const Ray_casting::AABB_ray_caster caster(g.geometry());
+  auto points = [&](double fraction, std::size_t most) {
+    Metrics::VSI::Reference_point_options o;
+    o.measured_fraction = fraction;
+    o.max_measured_faces = most;
+    return Metrics::VSI::compute_reference_points(g, caster, o).points;
+  };
+  const std::size_t quarter = std::size_t(std::ceil(0.25 * double(n)));
+  REQUIRE(Metrics::VSI::Reference_point_options().max_measured_faces > n);
+  const std::vector<Eigen::Vector3d> every = points(1., 0);
+  CHECK(points(1., Metrics::VSI::Reference_point_options().max_measured_faces) == every); // the default: all of them
+  CHECK(points(1., n) == every);
+  const std::vector<Eigen::Vector3d> limited = points(1., quarter);
+  CHECK(limited != every);
+  CHECK(limited == points(0.25, 0)); // the same faces as a quarter
+  CHECK(points(0.25, n) == limited); // the fewer of the two applies
+  CHECK(points(0.5, quarter) == limited);
+  CHECK(Metrics::VSI_options::thesis().reference.max_measured_faces == 0); // the thesis: every face
+}
+
 TEST_CASE("VSI distance jumps across the junction of a T, geodesic does not", "[vsi]")
 {
   const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::t_shape(4));

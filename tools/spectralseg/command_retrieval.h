@@ -94,6 +94,10 @@ inline void add_descriptor_options(CLI::App& cmd, Descriptor_choice& c)
   cmd.add_option("--vsi-fraction", o.vsi_fraction, "fraction of the faces whose shape image is ray-cast")
     ->check(Finite_range(0.0, 1.0))
     ->capture_default_str();
+  cmd.add_option("--max-measured-faces", o.max_measured_faces,
+                 "at most this many faces cast their cone of rays for their reference point (0: every face)")
+    ->check(Count(0, 1000000000))
+    ->capture_default_str();
   cmd.add_option("--bins", c.bins, "histogram bins")->check(Count(2, 100000))->capture_default_str();
   cmd.add_option("--sources", c.sources, "source faces (farthest-point samples, each weighted by its area share)")
     ->check(Count(1, 100000))
@@ -107,7 +111,7 @@ inline void add_descriptor_options(CLI::App& cmd, Descriptor_choice& c)
 inline void refuse_inapplicable_descriptor_options(const CLI::App* cmd, const Descriptor_choice& o)
 {
   std::vector<std::string> w;
-  for(const char* option : {"--weights", "--normalization", "--ray-caster", "--vsi-fraction"})
+  for(const char* option : {"--weights", "--normalization", "--ray-caster", "--vsi-fraction", "--max-measured-faces"})
     if(o.metric.name != "part-aware" && given(cmd, option))
       w.push_back(std::string(option) + " cannot be used here: it applies to --metric part-aware, not " +
                   o.metric.name);

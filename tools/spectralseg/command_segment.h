@@ -200,7 +200,8 @@ inline std::vector<std::string> inapplicable_segment_options(const Segment_optio
     ignored({"--eta", "--structure-only", "--min-part-area", "--max-parts", "--depth"},
             "it applies to --k auto --auto-method salient-cuts");
   if(salient)
-    ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--kernel", "--sampling",
+    ignored({"--metric", "--weights", "--ray-caster", "--normalization", "--vsi-fraction", "--max-measured-faces",
+             "--kernel", "--sampling",
              "--samples", "--seed", "--no-graph-cut", "--graph-cut", "--crease-angle", "--flat-seam-angle",
              "--graph-cut-backend",
              "--extra-clusters", "--alternative-extra-clusters", "--contrast-merge-clusters",

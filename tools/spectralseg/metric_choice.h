@@ -10,10 +10,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace spectralseg_cli {
+
+// VSI::Reference_point_options::max_measured_faces's default (checked in
+// segmentation_methods.cpp)
+constexpr std::size_t default_max_measured_faces = 100000;
 
 struct Metric_options
 {
@@ -25,6 +30,7 @@ struct Metric_options
   std::string ray_caster = "aabb";
 #endif
   double vsi_fraction = 0.01;
+  std::size_t max_measured_faces = default_max_measured_faces;
   std::string normalization = "p99";
 };
 
@@ -58,6 +64,11 @@ inline void add_metric_options(CLI::App& cmd, Metric_options& o)
                  "fraction of the faces whose shape image is ray-cast (the rest are interpolated)")
     ->check(Finite_range(0.0, 1.0))
     ->capture_default_str();
+  cmd.add_option("--max-measured-faces", o.max_measured_faces,
+                 "at most this many faces, spread over the shape, cast their cone of rays for their reference "
+                 "point; the others take their neighbours' depth (0: every face, the thesis)")
+    ->check(Count(0, 1000000000))
+    ->capture_default_str();
 }
 
 // The metric options given that the chosen --metric does not use.
@@ -68,7 +79,7 @@ inline std::vector<std::string> inapplicable_metric_options(const CLI::App* cmd,
   for(const char* option : {"--weights", "--normalization"})
     if(!part_aware && given(cmd, option))
       w.push_back(std::string(option) + " cannot be used here: it applies to --metric part-aware, not " + o.name);
-  for(const char* option : {"--ray-caster", "--vsi-fraction"})
+  for(const char* option : {"--ray-caster", "--vsi-fraction", "--max-measured-faces"})
     if((o.name == "geodesic" || o.name == "angular") && given(cmd, option))
       w.push_back(std::string(option) + " cannot be used here: --metric " + o.name + " casts no rays");
   return w;

@@ -57,6 +57,9 @@ Salient_cut_options::Salient_cut_options()
   max_parts = automatic.max_parts;
 }
 
+static_assert(SpectralSeg::Metrics::VSI::Reference_point_options().max_measured_faces == default_max_measured_faces,
+              "--max-measured-faces: the tool's default is the library's");
+
 namespace {
 
 template <typename RayCaster>
@@ -65,6 +68,7 @@ SpectralSeg::Metrics::Any_weight make_vsi_metric(const Metric_options& o)
   using namespace SpectralSeg::Metrics;
   VSI_options vsi;
   vsi.images.sample_fraction = o.vsi_fraction;
+  vsi.reference.max_measured_faces = o.max_measured_faces;
   if(o.name == "vsi")
     return VSI_weight<RayCaster>(vsi);
   const double gamma = o.weights.size() > 2 ? o.weights[2] : 0.;

@@ -79,8 +79,9 @@ public:
     this->set_normalization(normalization);
   }
 
-  /// the thesis's metric exactly: components normalised by their maximum
-  static Part_aware_weight thesis(const VSI_options& vsi = VSI_options())
+  /// the thesis's metric exactly: components normalised by their maximum,
+  /// every face's reference point from its own cone (`VSI_options::thesis()`)
+  static Part_aware_weight thesis(const VSI_options& vsi = VSI_options::thesis())
   {
     return Part_aware_weight(0.01, 0.195, 0.795, vsi, 0.001, Normalization::maximum());
   }

@@ -28,6 +28,16 @@ struct VSI_options
   VSI::Reference_point_options reference;
   /// shape images (50 antipodal ray pairs, 1% of the faces sampled)
   VSI::Shape_image_options images;
+
+  /// the thesis's construction: every face casts its cone for its
+  /// reference point, however many there are
+  /// (`reference.max_measured_faces` = 0)
+  static VSI_options thesis()
+  {
+    VSI_options o;
+    o.reference.max_measured_faces = 0;
+    return o;
+  }
 };
 
 /// \ingroup PkgSpectralSegVSI

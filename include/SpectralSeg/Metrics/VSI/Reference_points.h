@@ -84,8 +84,17 @@ struct Reference_point_options
   /// fraction of the faces that cast their cone, spread over the shape
   /// (`spread_samples()` on the centroids); the others take their
   /// neighbours' mean diameter along their own normal (1: every face, the
-  /// thesis's construction; doc/benchmarks.md has 0.25 measured)
+  /// thesis's construction, up to `max_measured_faces`; doc/benchmarks.md
+  /// has 0.25 measured)
   double measured_fraction = 1.;
+  /// at most this many faces cast their cone (0: no limit, every face as in
+  /// the thesis); on a larger mesh that many faces, spread over the shape,
+  /// cast it and the others are filled in as with `measured_fraction`
+  /// (whichever of the two leaves fewer faces casting applies). The
+  /// inscribed sphere changes over the shape's thickness, not over its
+  /// triangles, so a finer mesh adds rays but no information; the limit
+  /// keeps the cost of the rays bounded (doc/benchmarks.md has it measured)
+  std::size_t max_measured_faces = 100000;
   /// Laplacian smoothing iterations over the neighbourhood graph (0: none)
   std::size_t smoothing_iterations = 3;
   /// how far each iteration moves a point towards its neighbours' mean, in (0, 1]
@@ -126,7 +135,8 @@ struct Reference_points
 /// neighbours. A point whose smoothing path crosses the surface is moved to
 /// the nearest neighbouring point that did not.
 ///
-/// With `options.measured_fraction` below 1, only that fraction of the
+/// With `options.measured_fraction` below 1, or more faces than
+/// `options.max_measured_faces`, only that fraction or that many of the
 /// faces, spread over the shape, cast their cone (a quarter of the rays at
 /// 0.25); each other face takes the mean diameter of its neighbours that
 /// have one, propagated over the dual graph, and its point lies at half
@@ -158,11 +168,15 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
 
   const std::vector<Eigen::Vector3d> cone =
     cone_directions(options.rays, options.cone_angle_degrees * pi / 180.);
+  std::size_t casting = options.measured_fraction < 1. ? std::size_t(std::ceil(options.measured_fraction * double(n))) : n;
+  if(options.max_measured_faces > 0)
+    casting = std::min(casting, options.max_measured_faces);
+  const bool every_face = casting >= n;
   std::vector<std::uint8_t> casts(n, 1);
-  if(options.measured_fraction < 1.)
+  if(!every_face)
   {
     casts.assign(n, 0);
-    for(std::uint32_t f : spread_samples(geo.centroids, std::size_t(std::ceil(options.measured_fraction * double(n)))))
+    for(std::uint32_t f : spread_samples(geo.centroids, casting))
       casts[f] = 1;
   }
   internal::parallel_for(n, exec, "reference points", [&](std::size_t f) {
@@ -192,7 +206,7 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
 
   // Faces that did not cast their cone: the mean inscribed-sphere diameter
   // of their neighbours that did (or got one), along their own normal.
-  if(options.measured_fraction < 1.)
+  if(!every_face)
     internal::fill_from_neighbours(
       graph, casts, out.diameters, 0.,
       [&](std::size_t f) { return geo.normals[f].squaredNorm() >= 0.5; },
