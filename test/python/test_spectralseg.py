@@ -117,6 +117,10 @@ class KWay(unittest.TestCase):
         self.assertFalse(np.array_equal(default, geodesic))
         for labels in (thesis, geodesic):
             self.assertEqual(len(set(labels.tolist())), 5)
+        # below the limit every face casts its cone; with a lower one the distances change
+        d = spectralseg.face_distances(v, f, 0)
+        np.testing.assert_array_equal(d, spectralseg.face_distances(v, f, 0, max_measured_faces=0))
+        self.assertFalse(np.array_equal(d, spectralseg.face_distances(v, f, 0, max_measured_faces=len(f) // 4)))
 
     def test_automatic_k(self):
         v, f = Mesh.get()
@@ -221,6 +225,8 @@ class Retrieval(unittest.TestCase):
             spectralseg.shape_descriptor(v, f, metric="euclidean", weights=[0.5, 0, 0.5])
         with self.assertRaises(spectralseg.Error):
             spectralseg.shape_descriptor(v, f, bins=1)
+        with self.assertRaises(spectralseg.Error):
+            spectralseg.shape_descriptor(v, f, metric="geodesic", max_measured_faces=10)
         a = spectralseg.shape_descriptor(v, f, metric="geodesic", bins=32)
         b = spectralseg.shape_descriptor(v, f, metric="euclidean", bins=32)
         with self.assertRaises(spectralseg.Error):
@@ -410,6 +416,7 @@ class Errors(unittest.TestCase):
         self.assertInvalid("metric must be one of", seg, v, f, 3, metric="euclidean")
         self.assertInvalid("sampling must be one of", seg, v, f, 3, sampling="random")
         self.assertInvalid("threads must be", seg, v, f, 3, threads=-1)
+        self.assertInvalid("max_measured_faces must be", seg, v, f, 3, max_measured_faces=-1)
         self.assertInvalid(r"flat_seam_angle must be a number of degrees in \[0, 180\)", seg, v, f, 3,
                            flat_seam_angle=float("nan"))
         self.assertInvalid("weights must hold 2 or 3", seg, v, f, 3, weights=[1.0])
