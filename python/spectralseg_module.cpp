@@ -332,7 +332,8 @@ struct Metric_options
 };
 
 Metric_options metric_options(const std::string& metric, const std::vector<double>& weights,
-                              const std::string& normalization, double vsi_fraction, long long max_measured_faces, const py::object& ray_caster)
+                              const std::string& normalization, double vsi_fraction, long long max_measured_faces,
+                              const py::object& ray_caster)
 {
   Metric_options o;
   o.name = one_of("metric", metric, {"part-aware", "blend", "geodesic", "angular", "vsi"});
@@ -570,7 +571,8 @@ std::vector<long long> default_alternative_extra_clusters()
 
 py::object k_way_segmentation(const py::object& vertices, const py::object& faces, long long k, const std::string& metric,
                               const std::vector<double>& weights, const std::string& normalization,
-                              double vsi_fraction, long long max_measured_faces, const py::object& ray_caster, const std::string& kernel,
+                              double vsi_fraction, long long max_measured_faces, const py::object& ray_caster,
+                              const std::string& kernel,
                               const std::string& sampling, long long samples, long long seed,
                               bool boundary_enhancement, long long extra_clusters,
                               const std::vector<long long>& alternative_extra_clusters,
@@ -581,7 +583,8 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
   const Soup soup = soup_from_arrays(vertices, faces);
   const Graph_options go = graph_options(connect_touching_parts, contact_distance, speck_area_fraction);
   const std::size_t kk = count("k", k, 1, 100000);
-  const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, max_measured_faces, ray_caster);
+  const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, max_measured_faces,
+                                           ray_caster);
   K_way_settings ks = k_way_settings(kernel, sampling, samples, seed, boundary_enhancement, extra_clusters);
   ks.options.alternative_extra_clusters.clear();
   for(long long e : alternative_extra_clusters)
@@ -688,7 +691,8 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
                      const py::object& min_part_area, const py::object& max_parts, const py::object& parts,
                      const py::object& depth,
                      const std::string& metric, const std::vector<double>& weights, const std::string& normalization,
-                     double vsi_fraction, long long max_measured_faces, const py::object& ray_caster, const std::string& kernel,
+                     double vsi_fraction, long long max_measured_faces, const py::object& ray_caster,
+                     const std::string& kernel,
                      const std::string& sampling, long long samples, long long seed, bool boundary_enhancement,
                      long long threads, const py::object& progress, bool report, bool connect_touching_parts,
                      double contact_distance, double speck_area_fraction)
@@ -714,7 +718,8 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
                                                  : count("depth", py::cast<long long>(depth), 0, 1000000);
   if(!depth.is_none() && !salient)
     invalid("depth applies to method='salient_cuts'");
-  const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, max_measured_faces, ray_caster);
+  const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, max_measured_faces,
+                                           ray_caster);
   const K_way_settings ks = k_way_settings(kernel, sampling, samples, seed, boundary_enhancement,
                                            static_cast<long long>(SpectralSeg::K_way_options().extra_clusters));
   const unsigned t = static_cast<unsigned>(count("threads", threads, 0, 4096));
@@ -811,7 +816,8 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
 
 py::object face_distances(const py::object& vertices, const py::object& faces, const py::object& sources,
                           const std::string& metric, const std::vector<double>& weights,
-                          const std::string& normalization, double vsi_fraction, long long max_measured_faces, const py::object& ray_caster,
+                          const std::string& normalization, double vsi_fraction, long long max_measured_faces,
+                          const py::object& ray_caster,
                           long long threads, const py::object& progress, bool return_nearest,
                           bool connect_touching_parts, double contact_distance, double speck_area_fraction)
 {
@@ -824,7 +830,8 @@ py::object face_distances(const py::object& vertices, const py::object& faces, c
   const auto si = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(s);
   for(py::ssize_t i = 0; i < si.size(); ++i)
     from.push_back(si.data()[i]);
-  const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, max_measured_faces, ray_caster);
+  const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, max_measured_faces,
+                                           ray_caster);
   const unsigned t = static_cast<unsigned>(count("threads", threads, 0, 4096));
   Progress_bridge bridge(progress);
   struct Out
@@ -926,7 +933,8 @@ SpectralSeg::Retrieval::Shape_descriptor descriptor_of_dict(const py::object& o)
 }
 
 py::dict shape_descriptor(const py::object& vertices, const py::object& faces, const std::string& metric,
-                          const std::vector<double>& weights, const std::string& normalization, double vsi_fraction, long long max_measured_faces,
+                          const std::vector<double>& weights, const std::string& normalization, double vsi_fraction,
+                          long long max_measured_faces,
                           const py::object& ray_caster, long long bins, long long sources, double range,
                           long long threads, const py::object& progress, bool connect_touching_parts,
                           double contact_distance, double speck_area_fraction)
@@ -1042,7 +1050,8 @@ malformed file, InvalidInputError for a face that is not a triangle.)doc");
 
   m.def("k_way_segmentation", &k_way_segmentation, py::arg("vertices"), py::arg("faces"), py::arg("k"),
         py::kw_only(), py::arg("metric") = "part-aware", py::arg("weights") = default_weights,
-        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01, py::arg("max_measured_faces") = default_max_measured_faces(), py::arg("ray_caster") = py::none(),
+        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01,
+        py::arg("max_measured_faces") = default_max_measured_faces(), py::arg("ray_caster") = py::none(),
         py::arg("kernel") = "exponential", py::arg("sampling") = "auto", py::arg("samples") = 0,
         py::arg("seed") = 0, py::arg("boundary_enhancement") = true,
         py::arg("extra_clusters") = static_cast<long long>(SpectralSeg::K_way_options().extra_clusters),
@@ -1087,12 +1096,14 @@ flat_seam_angle: in the merges, a boundary whose mean concave angle is
   m.def("k_way_segmentation_automatic",
         [](const py::object& vertices, const py::object& faces, long long max_k, const py::object& min_boundary_contrast,
            const std::string& metric, const std::vector<double>& weights, const std::string& normalization,
-           double vsi_fraction, long long max_measured_faces, const py::object& ray_caster, const std::string& kernel, const std::string& sampling,
+           double vsi_fraction, long long max_measured_faces, const py::object& ray_caster, const std::string& kernel,
+           const std::string& sampling,
            long long samples, long long seed, bool boundary_enhancement, long long threads,
            const py::object& progress, bool report, bool connect_touching_parts, double contact_distance,
            double speck_area_fraction) {
           return automatic(vertices, faces, "concave-merge", max_k, min_boundary_contrast, 0.1, false, py::none(),
-                           py::none(), py::none(), py::none(), metric, weights, normalization, vsi_fraction, max_measured_faces,
+                           py::none(), py::none(), py::none(), metric, weights, normalization, vsi_fraction,
+                           max_measured_faces,
                            ray_caster, kernel, sampling, samples, seed, boundary_enhancement, threads, progress, report,
                            connect_touching_parts, contact_distance, speck_area_fraction);
         },
@@ -1124,7 +1135,8 @@ min_boundary_contrast: merging stops once the weakest boundary's mean concave
         py::arg("structure_only") = automatic_defaults.segmentability.structure_only,
         py::arg("min_part_area") = py::none(), py::arg("max_parts") = py::none(), py::arg("parts") = py::none(),
         py::arg("depth") = py::none(), py::arg("metric") = "part-aware", py::arg("weights") = default_weights,
-        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01, py::arg("max_measured_faces") = default_max_measured_faces(), py::arg("ray_caster") = py::none(),
+        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01,
+        py::arg("max_measured_faces") = default_max_measured_faces(), py::arg("ray_caster") = py::none(),
         py::arg("kernel") = "exponential", py::arg("sampling") = "auto", py::arg("samples") = 0,
         py::arg("seed") = 0, py::arg("boundary_enhancement") = true, py::arg("threads") = 0,
         py::arg("progress") = py::none(), py::arg("report") = false,
@@ -1164,7 +1176,8 @@ or merges, 'chosen_cuts', 'leaves', 'roots').
 
   m.def("face_distances", &face_distances, py::arg("vertices"), py::arg("faces"), py::arg("sources"),
         py::kw_only(), py::arg("metric") = "part-aware", py::arg("weights") = default_weights,
-        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01, py::arg("max_measured_faces") = default_max_measured_faces(), py::arg("ray_caster") = py::none(),
+        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01,
+        py::arg("max_measured_faces") = default_max_measured_faces(), py::arg("ray_caster") = py::none(),
         py::arg("threads") = 0, py::arg("progress") = py::none(), py::arg("return_nearest") = false,
         py::arg("connect_touching_parts") = true, py::arg("contact_distance") = 0.005,
         py::arg("speck_area_fraction") = 0.01,
@@ -1184,7 +1197,8 @@ speck_area_fraction, as for k_way_segmentation().)doc");
 
   m.def("shape_descriptor", &shape_descriptor, py::arg("vertices"), py::arg("faces"), py::kw_only(),
         py::arg("metric") = "part-aware", py::arg("weights") = std::vector<double>{0.02, 0., 0.98},
-        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01, py::arg("max_measured_faces") = default_max_measured_faces(), py::arg("ray_caster") = py::none(),
+        py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01,
+        py::arg("max_measured_faces") = default_max_measured_faces(), py::arg("ray_caster") = py::none(),
         py::arg("bins") = 64, py::arg("sources") = 32, py::arg("range") = 4.0, py::arg("threads") = 0,
         py::arg("progress") = py::none(), py::arg("connect_touching_parts") = true,
         py::arg("contact_distance") = 0.005, py::arg("speck_area_fraction") = 0.01,

@@ -168,7 +168,8 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
 
   const std::vector<Eigen::Vector3d> cone =
     cone_directions(options.rays, options.cone_angle_degrees * pi / 180.);
-  std::size_t casting = options.measured_fraction < 1. ? std::size_t(std::ceil(options.measured_fraction * double(n))) : n;
+  std::size_t casting =
+    options.measured_fraction < 1. ? std::size_t(std::ceil(options.measured_fraction * double(n))) : n;
   if(options.max_measured_faces > 0)
     casting = std::min(casting, options.max_measured_faces);
   const bool every_face = casting >= n;
