@@ -316,6 +316,20 @@ bool has_embree()
 #endif
 }
 
+// a method's name as Python spells it: 'salient-cuts' -> 'salient_cuts'
+std::string python_name(std::string name)
+{
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
+// the defaults of the metric keywords and of automatic_segmentation()'s max_k
+std::vector<double> default_metric_weights()
+{
+  return {0.01, 0.195, 0.795};
+}
+constexpr long long default_automatic_max_k = 20;
+
 long long default_max_measured_faces()
 {
   return static_cast<long long>(SpectralSeg::Metrics::VSI::Reference_point_options().max_measured_faces);
@@ -716,8 +730,21 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
   const std::size_t keep_parts = parts.is_none() ? 0 : count("parts", py::cast<long long>(parts), 1, 1000000);
   const std::size_t keep_depth = depth.is_none() ? std::numeric_limits<std::size_t>::max()
                                                  : count("depth", py::cast<long long>(depth), 0, 1000000);
-  if(!depth.is_none() && !salient)
-    invalid("depth applies to method='salient_cuts'");
+  if(!salient && (!depth.is_none() || eta != Salient_options().segmentability.threshold ||
+                  structure_only != Salient_options().segmentability.structure_only || !min_part_area.is_none() ||
+                  !max_parts.is_none()))
+    invalid("eta, structure_only, min_part_area, max_parts and depth apply to method='salient_cuts', not '" +
+            python_name(method) + "'");
+  // the salient cuts weigh the dual graph themselves and make no embedding:
+  // the metric and k-way keywords are refused rather than ignored (as the
+  // CLI refuses their options); a keyword given its default is not told apart
+  if(salient && (metric != "part-aware" || weights != default_metric_weights() || normalization != "p99" ||
+                 vsi_fraction != 0.01 || max_measured_faces != default_max_measured_faces() || !ray_caster.is_none() ||
+                 kernel != "exponential" || sampling != "auto" || samples != 0 || seed != 0 || !boundary_enhancement ||
+                 max_k != default_automatic_max_k || !min_boundary_contrast.is_none()))
+    invalid("metric, weights, normalization, vsi_fraction, max_measured_faces, ray_caster, kernel, sampling, samples, "
+            "seed, boundary_enhancement, max_k and min_boundary_contrast do not apply to method='" +
+            python_name(method) + "': the salient cuts use none of the metric and k-way options");
   const Metric_options mo = metric_options(metric, weights, normalization, vsi_fraction, max_measured_faces,
                                            ray_caster);
   const K_way_settings ks = k_way_settings(kernel, sampling, samples, seed, boundary_enhancement,
@@ -1036,7 +1063,7 @@ while computing; Ctrl-C interrupts.)doc";
     }
   });
 
-  const std::vector<double> default_weights{0.01, 0.195, 0.795};
+  const std::vector<double> default_weights = default_metric_weights();
   const SpectralSeg::Automatic_segmentation_options<> automatic_defaults;
 
   m.def("read_mesh", &read_mesh, py::arg("path"),
@@ -1130,7 +1157,7 @@ min_boundary_contrast: merging stops once the weakest boundary's mean concave
           .c_str());
 
   m.def("automatic_segmentation", &automatic, py::arg("vertices"), py::arg("faces"), py::kw_only(),
-        py::arg("method") = "contrast_merge", py::arg("max_k") = 20, py::arg("min_boundary_contrast") = py::none(),
+        py::arg("method") = "contrast_merge", py::arg("max_k") = default_automatic_max_k, py::arg("min_boundary_contrast") = py::none(),
         py::arg("eta") = automatic_defaults.segmentability.threshold,
         py::arg("structure_only") = automatic_defaults.segmentability.structure_only,
         py::arg("min_part_area") = py::none(), py::arg("max_parts") = py::none(), py::arg("parts") = py::none(),
@@ -1154,7 +1181,7 @@ auto`), by one of three methods:
     'salient_cuts': top-down after the thesis's chapter 6, recursive cuts of
         the pieces that pass the segmentability test
         (SpectralSeg::segment_automatically()), with our salience and test;
-        the metric, kernel and sampling options do not apply
+        the metric, kernel and sampling keywords are refused
     'salient_cuts_thesis': the same as the thesis published it
 
 max_k: clusters of the over-segmentation (merge methods), default 20

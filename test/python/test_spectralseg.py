@@ -424,6 +424,17 @@ class Errors(unittest.TestCase):
         self.assertInvalid("method must be one of", spectralseg.automatic_segmentation, v, f, method="magic")
         self.assertInvalid("eta must be", spectralseg.automatic_segmentation, v, f, method="salient_cuts",
                            eta=float("nan"))
+        # keywords of one automatic method are refused by the others, not ignored
+        auto = spectralseg.automatic_segmentation
+        for option in ({"metric": "geodesic"}, {"weights": [1, 0, 0]}, {"vsi_fraction": 0.02},
+                       {"max_measured_faces": 10}, {"kernel": "gaussian"}, {"samples": 5}, {"seed": 3},
+                       {"boundary_enhancement": False}, {"max_k": 10}, {"min_boundary_contrast": 2.0}):
+            for method in ("salient_cuts", "salient_cuts_thesis"):
+                self.assertInvalid("do not apply to method='" + method + "'", auto, v, f, method=method, **option)
+        for option in ({"eta": 0.2}, {"structure_only": True}, {"min_part_area": 0.1}, {"max_parts": 4},
+                       {"depth": 1}):
+            for method in ("contrast_merge", "concave_merge"):
+                self.assertInvalid("apply to method='salient_cuts', not '" + method + "'", auto, v, f, method=method, **option)
         self.assertInvalid("source face 99999 does not exist", spectralseg.face_distances, v, f, 99999)
         self.assertInvalid("sources must be", spectralseg.face_distances, v, f, [])
         self.assertInvalid(r"contact_distance must be a number in \[0", seg, v, f, 3, contact_distance=-1)
