@@ -1128,13 +1128,15 @@ flat_seam_angle: in the merges, a boundary whose mean concave angle is
            long long samples, long long seed, bool boundary_enhancement, long long threads,
            const py::object& progress, bool report, bool connect_touching_parts, double contact_distance,
            double speck_area_fraction) {
-          return automatic(vertices, faces, "concave-merge", max_k, min_boundary_contrast, 0.1, false, py::none(),
+          const SpectralSeg::Automatic_segmentation_options<> unused; // the salient-cut keywords at their defaults
+          return automatic(vertices, faces, "concave-merge", max_k, min_boundary_contrast,
+                           unused.segmentability.threshold, unused.segmentability.structure_only, py::none(),
                            py::none(), py::none(), py::none(), metric, weights, normalization, vsi_fraction,
                            max_measured_faces,
                            ray_caster, kernel, sampling, samples, seed, boundary_enhancement, threads, progress, report,
                            connect_touching_parts, contact_distance, speck_area_fraction);
         },
-        py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("max_k") = 20,
+        py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("max_k") = default_automatic_max_k,
         py::arg("min_boundary_contrast") = py::none(), py::arg("metric") = "part-aware",
         py::arg("weights") = default_weights, py::arg("normalization") = "p99", py::arg("vsi_fraction") = 0.01,
         py::arg("max_measured_faces") = default_max_measured_faces(),
@@ -1157,7 +1159,8 @@ min_boundary_contrast: merging stops once the weakest boundary's mean concave
           .c_str());
 
   m.def("automatic_segmentation", &automatic, py::arg("vertices"), py::arg("faces"), py::kw_only(),
-        py::arg("method") = "contrast_merge", py::arg("max_k") = default_automatic_max_k, py::arg("min_boundary_contrast") = py::none(),
+        py::arg("method") = "contrast_merge", py::arg("max_k") = default_automatic_max_k,
+        py::arg("min_boundary_contrast") = py::none(),
         py::arg("eta") = automatic_defaults.segmentability.threshold,
         py::arg("structure_only") = automatic_defaults.segmentability.structure_only,
         py::arg("min_part_area") = py::none(), py::arg("max_parts") = py::none(), py::arg("parts") = py::none(),

@@ -434,7 +434,8 @@ class Errors(unittest.TestCase):
         for option in ({"eta": 0.2}, {"structure_only": True}, {"min_part_area": 0.1}, {"max_parts": 4},
                        {"depth": 1}):
             for method in ("contrast_merge", "concave_merge"):
-                self.assertInvalid("apply to method='salient_cuts', not '" + method + "'", auto, v, f, method=method, **option)
+                self.assertInvalid("apply to method='salient_cuts', not '" + method + "'", auto, v, f,
+                                   method=method, **option)
         self.assertInvalid("source face 99999 does not exist", spectralseg.face_distances, v, f, 99999)
         self.assertInvalid("sources must be", spectralseg.face_distances, v, f, [])
         self.assertInvalid(r"contact_distance must be a number in \[0", seg, v, f, 3, contact_distance=-1)
