@@ -335,6 +335,17 @@ long long default_max_measured_faces()
   return static_cast<long long>(SpectralSeg::Metrics::VSI::Reference_point_options().max_measured_faces);
 }
 
+// whether the part-aware metric's keywords are all at their defaults (the
+// weights' default is the caller's): a method that does not use them
+// refuses them otherwise; a keyword given its default is not told apart
+bool part_aware_keywords_unset(const std::vector<double>& weights, const std::vector<double>& default_weights,
+                               const std::string& normalization, double vsi_fraction, long long max_measured_faces,
+                               const py::object& ray_caster)
+{
+  return weights == default_weights && normalization == "p99" && vsi_fraction == 0.01 &&
+         max_measured_faces == default_max_measured_faces() && ray_caster.is_none();
+}
+
 struct Metric_options
 {
   std::string name;
@@ -737,9 +748,10 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
             python_name(method) + "'");
   // the salient cuts weigh the dual graph themselves and make no embedding:
   // the metric and k-way keywords are refused rather than ignored (as the
-  // CLI refuses their options); a keyword given its default is not told apart
-  if(salient && (metric != "part-aware" || weights != default_metric_weights() || normalization != "p99" ||
-                 vsi_fraction != 0.01 || max_measured_faces != default_max_measured_faces() || !ray_caster.is_none() ||
+  // CLI refuses their options)
+  if(salient && (metric != "part-aware" ||
+                 !part_aware_keywords_unset(weights, default_metric_weights(), normalization, vsi_fraction,
+                                            max_measured_faces, ray_caster) ||
                  kernel != "exponential" || sampling != "auto" || samples != 0 || seed != 0 || !boundary_enhancement ||
                  max_k != default_automatic_max_k || !min_boundary_contrast.is_none()))
     invalid("metric, weights, normalization, vsi_fraction, max_measured_faces, ray_caster, kernel, sampling, samples, "
@@ -971,9 +983,8 @@ py::dict shape_descriptor(const py::object& vertices, const py::object& faces, c
   const std::string name = one_of("metric", metric, {"part-aware", "geodesic", "euclidean"});
   if(weights.size() != 3)
     invalid("weights must hold 3 coefficients (geodesic, angular, vsi)");
-  if(name != "part-aware" && (weights != std::vector<double>{0.02, 0., 0.98} || normalization != "p99" ||
-                              vsi_fraction != 0.01 || max_measured_faces != default_max_measured_faces() ||
-                              !ray_caster.is_none()))
+  if(name != "part-aware" && !part_aware_keywords_unset(weights, std::vector<double>{0.02, 0., 0.98}, normalization,
+                                                        vsi_fraction, max_measured_faces, ray_caster))
     invalid("weights, normalization, vsi_fraction, max_measured_faces and ray_caster apply to metric 'part-aware', "
             "not '" + name + "'");
   const Metric_options mo = metric_options(name == "euclidean" ? "geodesic" : name, weights, normalization,
