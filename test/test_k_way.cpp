@@ -611,6 +611,10 @@ TEST_CASE("most typical over-segmentation: the medoid of the merges, coarser clu
   // two answers agree, the odd one out is not the medoid, whatever its place
   CHECK(internal::medoid_labelling({other, halves, renamed}, {2, 2, 2}, area) == 1);
   CHECK(internal::medoid_labelling({halves, other, renamed}, {2, 2, 2}, area) == 0);
+  // only the eligible may be kept (all vote): the odd one when it is alone,
+  // else the eligible of least summed distance
+  CHECK(internal::medoid_labelling({other, halves, renamed}, {2, 2, 2}, area, {1, 0, 0}) == 0);
+  CHECK(internal::medoid_labelling({other, halves, renamed}, {2, 2, 2}, area, {1, 0, 1}) == 2);
   // coarser clusterings: K-means on four blobs from four clusters joined to
   // 2 by Ward's rule joins the blobs that are near each other
   Eigen::MatrixXd points(8, 1);
@@ -627,7 +631,9 @@ TEST_CASE("most typical over-segmentation: the medoid of the merges, coarser clu
   // the option: one over-segmentation is the merge as before; five give an
   // answer of the star with its parts, the same on any number of threads
   const Star& s = star();
-  const K_way_result one = segment_hybrid(s.weighted, Hybrid_options(), Execution(1));
+  Hybrid_options single;
+  single.over_segmentations = 1;
+  const K_way_result one = segment_hybrid(s.weighted, single, Execution(1));
   Hybrid_options five;
   five.over_segmentations = 5;
   const K_way_result r1 = segment_hybrid(s.weighted, five, Execution(1));

@@ -87,17 +87,20 @@ struct Basic_hybrid_options
   /// (doc/benchmarks.md). Meshes with at most this many faces are not
   /// affected
   std::size_t reference_faces = internal::default_reference_faces;
-  /// how many over-segmentations vote (default 5; at least 1; 1: one, the
-  /// contrast merge until 2026-11-27): with more than one, the K-means
-  /// clusters are also joined by Ward's rule into 2, 4, ... fewer clusters
-  /// (at least 2), K-means is run again from each joined set, every
-  /// over-segmentation is merged by contrast, and the one whose answer is
-  /// closest to the others' (least summed area-weighted Rand distance, the
-  /// medoid) is kept: an answer that only one granularity of the clusters
-  /// gives is not taken. It scores better on psb-dev and moves fewer models
-  /// when the metric is perturbed (doc/benchmarks.md), for four more
-  /// K-means runs and merges
-  std::size_t over_segmentations = 5;
+  /// how many over-segmentations vote (default 10: with the default 20
+  /// clusters, every even number of clusters from 20 down to 2; at least 1;
+  /// 1: one, the contrast merge until 2026-11-27; 5 until 2026-12-04): with
+  /// more than one, the K-means clusters are also joined by Ward's rule
+  /// into 2, 4, ... fewer clusters (at least 2), K-means is run again from
+  /// each joined set, every over-segmentation is merged by contrast, and
+  /// the one whose answer is closest to the others' (least summed
+  /// area-weighted Rand distance, the medoid) is kept: an answer that only
+  /// some granularities of the clusters give is not taken. With `parts`,
+  /// only an over-segmentation of at least `parts` clusters is kept (all
+  /// vote). It scores better on psb-dev and moves fewer models when the
+  /// metric is perturbed (doc/benchmarks.md), for more K-means runs and
+  /// merges
+  std::size_t over_segmentations = 10;
   /// when positive, the answer has this many parts (or as many as the
   /// over-segmentation has, if fewer): the merge hierarchy
   /// (`K_way_result::hierarchy`) cut at that number instead of where
@@ -220,7 +223,7 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
   lap("k-means");
   std::size_t m = internal::merge_most_typical_over_segmentation(
     graph, options.k_way, clusters, options.over_segmentations, options.min_segments, options.min_boundary_contrast,
-    options.neck_scale, options.reference_faces, r, exec);
+    options.neck_scale, options.reference_faces, options.parts, r, exec);
   if(options.parts > 0)
   {
     r.labels = r.hierarchy.labels_with_parts(options.parts);

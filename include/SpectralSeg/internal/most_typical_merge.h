@@ -57,9 +57,12 @@ SPECTRALSEG_INLINE double rand_distance(const std::vector<int>& x, std::size_t a
 
 // The index of the medoid of `labellings` (each with `counts[i]` labels):
 // the one whose summed rand_distance() to the others is smallest (ties:
-// the first).
+// the first). With `eligible` (one flag per labelling, at least one set),
+// the one of least sum among those flagged; every labelling still counts
+// in the sums.
 SPECTRALSEG_INLINE std::size_t medoid_labelling(const std::vector<std::vector<int>>& labellings,
-                                                const std::vector<std::size_t>& counts, const std::vector<double>& area)
+                                                const std::vector<std::size_t>& counts, const std::vector<double>& area,
+                                                const std::vector<char>& eligible = std::vector<char>())
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t m = labellings.size();
@@ -71,7 +74,11 @@ SPECTRALSEG_INLINE std::size_t medoid_labelling(const std::vector<std::vector<in
       sum[i] += d;
       sum[j] += d;
     }
-  return std::size_t(std::min_element(sum.begin(), sum.end()) - sum.begin());
+  std::size_t best = m;
+  for(std::size_t i = 0; i < m; ++i)
+    if((eligible.empty() || eligible[i]) && (best == m || sum[i] < sum[best]))
+      best = i;
+  return best == m ? 0 : best;
 }
 #else
 ;
@@ -188,16 +195,18 @@ SPECTRALSEG_INLINE std::vector<Clustering::Kmeans_result> coarser_clusterings(
 // coarser_clusterings() of it with 2, 4, ... fewer clusters (at least 2),
 // each merged by contrast; the one whose answer is the medoid_labelling()
 // of the answers is kept: `r.labels` are its answer, `r.hierarchy` its
-// merges and `r.clusters` its clusters. The crease regions and concave
-// angles are made once for all the merges. With `count` at most 1 (or too
-// few clusters), merge_clusters_by_contrast() on `r.clusters` alone.
-// Returns the number of segments of the answer.
+// merges and `r.clusters` its clusters. With `parts` > 0 only those of at
+// least `parts` clusters may be kept (all still vote), so that the kept
+// hierarchy can be cut at `parts`. The crease regions and concave angles
+// are made once for all the merges. With `count` at most 1 (or too few
+// clusters), merge_clusters_by_contrast() on `r.clusters` alone. Returns
+// the number of segments of the answer.
 template <typename AffinityKernel>
 std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& graph,
                                                  const Basic_K_way_options<AffinityKernel>& k_way,
                                                  std::size_t clusters, std::size_t count, std::size_t min_segments,
                                                  double limit, double neck_scale, std::size_t reference_faces,
-                                                 K_way_result& r, const Execution& exec)
+                                                 std::size_t parts, K_way_result& r, const Execution& exec)
 {
   std::vector<std::size_t> sizes;
   for(std::size_t i = 1; i < count && clusters >= 2 * i + 2; ++i)
@@ -216,7 +225,12 @@ std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& grap
     counts[i] = merge_labels_by_contrast(graph, k_way, min_segments, limit, neck_scale, reference_faces,
                                          r.embedding.coordinates, answers[i], histories[i], shared);
   });
-  const std::size_t kept = members.size() > 1 ? medoid_labelling(answers, counts, graph.graph().geometry().areas) : 0;
+  std::vector<char> eligible(members.size(), 1); // fine enough for `parts`
+  if(parts > 0)
+    for(std::size_t i = 1; i < members.size(); ++i) // the first has the most clusters
+      eligible[i] = sizes[i - 1] >= parts;
+  const std::size_t kept =
+    members.size() > 1 ? medoid_labelling(answers, counts, graph.graph().geometry().areas, eligible) : 0;
   r.labels = std::move(answers[kept]);
   r.clusters = std::move(members[kept]);
   keep_merges(graph, std::move(histories[kept]), r, nullptr);
