@@ -210,11 +210,9 @@ private:
     context.skip_primitive = RTC_INVALID_GEOMETRY_ID;
     if(skip == no_face)
       return;
-    // face_of_primitive_ is increasing: binary search
-    const auto it = std::lower_bound(face_of_primitive_.begin(), face_of_primitive_.end(), skip);
-    if(it == face_of_primitive_.end() || *it != skip)
+    if(std::size_t(skip) >= primitive_of_face_.size() || primitive_of_face_[skip] == RTC_INVALID_GEOMETRY_ID)
       return; // degenerate or out of range: nothing to skip
-    context.skip_primitive = static_cast<unsigned>(it - face_of_primitive_.begin());
+    context.skip_primitive = primitive_of_face_[skip];
     context.base.filter = &Embree_ray_caster::skip_filter;
   }
 
@@ -255,6 +253,7 @@ private:
   std::unique_ptr<std::remove_pointer_t<RTCDevice>, Device_release> device_;
   std::unique_ptr<std::remove_pointer_t<RTCScene>, Scene_release> scene_;
   std::vector<size_type> face_of_primitive_; // primID -> face index
+  std::vector<unsigned> primitive_of_face_;  // face index -> primID (RTC_INVALID_GEOMETRY_ID: degenerate)
   Eigen::Vector3d centre_ = Eigen::Vector3d::Zero();
   float tnear_ = 0.f;
 };
@@ -274,6 +273,7 @@ SPECTRALSEG_INLINE Embree_ray_caster::Embree_ray_caster(const Mesh_geometry& geo
   std::vector<std::uint32_t> indices;
   indices.reserve(3 * geometry.number_of_faces());
   face_of_primitive_.reserve(geometry.number_of_faces());
+  primitive_of_face_.assign(geometry.number_of_faces(), RTC_INVALID_GEOMETRY_ID);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
   for(std::size_t f = 0; f < geometry.number_of_faces(); ++f)
@@ -286,6 +286,7 @@ SPECTRALSEG_INLINE Embree_ray_caster::Embree_ray_caster(const Mesh_geometry& geo
       lo = lo.cwiseMin(geometry.points[v]);
       hi = hi.cwiseMax(geometry.points[v]);
     }
+    primitive_of_face_[f] = static_cast<unsigned>(face_of_primitive_.size());
     face_of_primitive_.push_back(static_cast<size_type>(f));
   }
   if(!face_of_primitive_.empty())

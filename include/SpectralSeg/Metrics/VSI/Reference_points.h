@@ -185,7 +185,7 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
     out.points[f] = geo.centroids[f];
     if(!casts[f] || normal.squaredNorm() < 0.5)
       return;
-    std::vector<Eigen::Vector3d> dirs;
+    thread_local std::vector<Eigen::Vector3d> dirs; // no allocation per face
     rotate_to(-normal, cone, dirs);
     // A ray at angle theta can only lower the estimate d if it hits closer
     // than d cos(theta): later rays are cast with that bound.
