@@ -5,7 +5,17 @@
 humans' leave-one-out Rand-index error (each human against the others), and
 optionally a method's error from a bench_psb_quality --out TSV beside it.
 
+With --categories, a Markdown table per category instead: each human's
+leave-one-out error on a model, summarised per model as the humans' mean,
+their median and the best human (the one closest to the others), averaged
+over the category's models; then every method of RESULTS.tsv, and the
+peers' labels in PSB_DIR/peers/<name>/<id>.seg when that folder exists.
+A category's bar below the humans' mean asks a method to agree with the
+humans more than a typical human does; the best human shows how far that
+can go.
+
 usage: psb_human_scores.py PSB_DIR [RESULTS.tsv [METHOD]]   (METHOD default kway; needs numpy: /usr/bin/python3 on Debian)
+       psb_human_scores.py --categories PSB_DIR [RESULTS.tsv]
 """
 import glob
 import sys
@@ -30,7 +40,48 @@ def rand_index_error(a, b):
     return 1 - agree / total
 
 
+def human_errors(root, model):
+    """Each human's leave-one-out Rand-index error on `model`, and the humans' labels."""
+    humans = [load(f) for f in sorted(glob.glob(f'{root}/seg/{model}/{model}_*.seg'))]
+    loo = [np.mean([rand_index_error(humans[a], humans[b]) for b in range(len(humans)) if b != a])
+           for a in range(len(humans))]
+    return loo, humans
+
+
+def categories(root, results):
+    rows = [l.split('\t') for l in open(root + '/index.tsv').read().split('\n')[1:] if l]
+    methods, ours = [], {}
+    if results:
+        for line in open(results).read().split('\n')[1:]:
+            t = line.split('\t')
+            if len(t) > 6:
+                if t[2] not in methods:
+                    methods.append(t[2])
+                ours[(t[0], t[2])] = float(t[6])
+    peers = sorted(d.split('/')[-2] for d in glob.glob(f'{root}/peers/*/'))
+    columns = ['humans, mean', 'humans, median', 'best human'] + methods + peers
+    table = {}
+    for r in rows:
+        loo, humans = human_errors(root, r[0])
+        values = [np.mean(loo), np.median(loo), min(loo)]
+        values += [ours.get((r[0], m), np.nan) for m in methods]
+        for p in peers:
+            labels = load(f'{root}/peers/{p}/{r[0]}.seg')
+            values.append(np.mean([rand_index_error(labels, h) for h in humans]))
+        table.setdefault(r[1], []).append(values)
+    print('| category | ' + ' | '.join(columns) + ' |')
+    print('|---|' + '---:|' * len(columns))
+    every = []
+    for c in sorted(table):
+        every += table[c]
+        print(f'| {c} | ' + ' | '.join('%.3f' % v for v in np.mean(table[c], axis=0)) + ' |')
+    print('| **all** | ' + ' | '.join('**%.3f**' % v for v in np.mean(every, axis=0)) + ' |')
+
+
 def main():
+    if len(sys.argv) > 2 and sys.argv[1] == '--categories':
+        categories(sys.argv[2], sys.argv[3] if len(sys.argv) > 3 else None)
+        return
     root = sys.argv[1]
     ours = {}
     method = sys.argv[3] if len(sys.argv) > 3 else 'kway'
@@ -42,10 +93,9 @@ def main():
     rows = [l.split('\t') for l in open(root + '/index.tsv').read().split('\n')[1:] if l]
     mean = 0.
     for r in rows:
-        humans = [load(f) for f in sorted(glob.glob(f'{root}/seg/{r[0]}/{r[0]}_*.seg'))]
+        each, humans = human_errors(root, r[0])
         ks = sorted(len(np.unique(h)) for h in humans)
-        loo = np.mean([np.mean([rand_index_error(humans[a], humans[b]) for b in range(len(humans)) if b != a])
-                       for a in range(len(humans))])
+        loo = np.mean(each)
         mean += loo
         extra = ' method %.3f' % ours[r[0]] if r[0] in ours else ''
         print(f'{r[0]} {r[1]} k {r[3]} humans k {ks} humans {loo:.3f}{extra}')

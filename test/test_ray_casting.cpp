@@ -365,6 +365,42 @@ TEMPLATE_TEST_CASE("Ray casting: degenerate faces, empty meshes, odd batches", "
       CHECK(batch[count] == -1.); // nothing written past the end
     }
   }
+  // Degenerate faces before and between the real ones, so that the casters'
+  // own numbering of the triangles differs from the faces': a ray from the
+  // centre towards each face's centroid hits that face, and skipping it, the
+  // ray meets no face there (the other half of the square side lies beside).
+  {
+    const Mesh_geometry base = unit_cube();
+    Mesh_geometry g;
+    g.points = base.points;
+    g.points.emplace_back(0., -0.5, -0.5);
+    g.points.emplace_back(0., 0.5, 0.5);
+    g.triangles.push_back({8, 9, 8});
+    g.triangles.push_back({9, 9, 9});
+    for(std::size_t f = 0; f < base.triangles.size(); ++f)
+    {
+      g.triangles.push_back(base.triangles[f]);
+      if(f == 5)
+        g.triangles.push_back({8, 8, 9});
+    }
+    g.compute_face_attributes();
+    const TestType caster(g);
+    std::size_t real = 0;
+    for(std::size_t f = 0; f < g.triangles.size(); ++f)
+    {
+      if(g.degenerate[f])
+        continue;
+      ++real;
+      const Eigen::Vector3d to = g.centroids[f].normalized();
+      size_type face = TestType::no_face;
+      CHECK(caster.first_hit(Eigen::Vector3d::Zero(), to, TestType::no_face, &face) == Approx(g.centroids[f].norm()));
+      CHECK(face == size_type(f));
+      face = TestType::no_face;
+      caster.first_hit(Eigen::Vector3d::Zero(), to, size_type(f), &face);
+      CHECK(face != size_type(f));
+    }
+    CHECK(real == 12);
+  }
   // A mesh without faces hits nothing.
   {
     Mesh_geometry empty;
