@@ -32,6 +32,9 @@
 //   --markdown FILE.md      also write the tables to this file
 //   --png-dir DIR           pictures of the 2 best and 2 worst models of each method, beside a human one
 //   --labels-dir DIR        each result's labels, METHOD_ID.seg, one per face of the .off file
+//   --candidates-out F.tsv  method kway: every over-segmentation candidate of each model (K_way_result::candidates)
+//                           with its concave normalized cut before and after its graph cut, whether it was kept,
+//                           and its own Rand-index error: the choice between them can be replayed offline
 //   --shard i/N             run only the models whose row number is i mod N
 //   --out FILE.tsv          per-model rows (default: stdout only)
 //   --alpha A --beta B --gamma C   part-aware coefficients
@@ -89,6 +92,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <numeric>
@@ -113,7 +117,7 @@ struct Row
 
 struct Options
 {
-  std::string dir, out;
+  std::string dir, out, candidates_out;
   std::vector<std::string> methods{"kway"};
   std::size_t shard = 0, shards = 1;
   double alpha = 0.01, beta = 0.195, gamma = 0.795;
@@ -290,7 +294,9 @@ std::vector<double> part_aware_weights(const Options& o, const SpectralSeg::Dual
   return part_aware<SpectralSeg::Ray_casting::AABB_ray_caster>(o, g, exec);
 }
 
-std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, std::size_t k)
+// With `candidates`, the k-way candidates are kept there with their labels.
+std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, std::size_t k,
+                          std::vector<SpectralSeg::K_way_candidate>* candidates = nullptr)
 {
   const SpectralSeg::Execution exec(o.threads);
   const std::vector<double> w = part_aware_weights(o, g, exec);
@@ -350,8 +356,11 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
     automatic.min_boundary_contrast = o.auto_contrast;
     return SpectralSeg::segment_k_way_automatic(wg, automatic, exec).labels;
   }
-  const auto r = o.kernel == "gaussian" ? SpectralSeg::segment_k_way(wg, k, ko.with_kernel(SpectralSeg::Kernels::Gaussian_kernel()), exec)
-                                        : SpectralSeg::segment_k_way(wg, k, ko, exec);
+  ko.keep_candidate_labels = candidates != nullptr;
+  auto r = o.kernel == "gaussian" ? SpectralSeg::segment_k_way(wg, k, ko.with_kernel(SpectralSeg::Kernels::Gaussian_kernel()), exec)
+                                  : SpectralSeg::segment_k_way(wg, k, ko, exec);
+  if(candidates)
+    *candidates = std::move(r.candidates);
   return r.labels;
 }
 
@@ -620,6 +629,8 @@ int run(int argc, char** argv)
       o.markdown = next();
     else if(a == "--labels-dir")
       o.labels_dir = next();
+    else if(a == "--candidates-out")
+      o.candidates_out = next();
     else if(a == "--png-dir")
       o.png_dir = next();
     else if(a == "--seed")
@@ -671,6 +682,12 @@ int run(int argc, char** argv)
     out.open(o.out);
     out << "id\tcategory\tmethod\tfaces\tk\tsegments\tri_error\tseconds\n";
   }
+  std::ofstream candidates_out;
+  if(!o.candidates_out.empty())
+  {
+    candidates_out.open(o.candidates_out);
+    candidates_out << "id\tcategory\tk\tcandidate\textra_clusters\tmerge\tsegments\tcut_before_graph_cut\tcut\tri_error\tkept\n";
+  }
   std::vector<Row> rows;
   std::string line;
   std::getline(index, line); // header
@@ -703,12 +720,14 @@ int run(int argc, char** argv)
       Options mo = o;
       if(method == "auto" && mo.auto_k == 0)
         mo.auto_k = 20;
+      std::vector<SpectralSeg::K_way_candidate> candidates;
+      const bool log_candidates = candidates_out.is_open() && method == "kway" && o.auto_k == 0;
       const std::vector<int> labels = peer ? read_in_mesh_order((fs::path(o.dir) / "peers" / method / (id + ".seg")).string(),
                                                                 report.input_face_of_face)
                                       : method == "sdf"       ? run_sdf(mesh)
                                       : method == "salient" ? run_salient(mo, g)
                                       : method == "contrast" ? run_contrast(mo, g)
-                                                            : run_kway(mo, g, k);
+                                                            : run_kway(mo, g, k, log_candidates ? &candidates : nullptr);
       const std::string method_name = method == "kway" && o.auto_k > 0 ? "kway-auto" : method;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       double ri = 0;
@@ -737,6 +756,18 @@ int run(int argc, char** argv)
       if(out)
         out << id << '\t' << category << '\t' << method_name << '\t' << r.faces << '\t' << k << '\t' << r.segments << '\t'
             << ri << '\t' << seconds << '\n';
+      for(std::size_t i = 0; i < candidates.size(); ++i)
+      {
+        const SpectralSeg::K_way_candidate& c = candidates[i];
+        double c_ri = 0;
+        for(const auto& h : humans)
+          c_ri += SpectralSeg::Evaluation::rand_index_error(c.labels, h);
+        c_ri /= double(humans.size());
+        candidates_out << id << '\t' << category << '\t' << k << '\t' << i << '\t' << c.extra_clusters << '\t'
+                       << (c.contrast_merge ? "contrast" : "concave") << '\t' << c.number_of_segments << '\t'
+                       << std::setprecision(17) << c.normalized_cut_before_graph_cut << '\t' << c.normalized_cut
+                       << '\t' << std::setprecision(6) << c_ri << '\t' << (c.kept ? 1 : 0) << '\n';
+      }
     }
   }
   print_tables(rows);

@@ -660,6 +660,22 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
   d["merge"] = out.r.contrast_merge ? "contrast" : "concave";
   if(!ks.options.alternative_extra_clusters.empty() || ks.options.contrast_merge_clusters > 0)
     d["concave_normalized_cut"] = out.r.normalized_cut;
+  if(!out.r.candidates.empty())
+  { // every over-segmentation tried, as in the tool's JSON report
+    py::list candidates;
+    for(const SpectralSeg::K_way_candidate& c : out.r.candidates)
+    {
+      py::dict x;
+      x["extra_clusters"] = c.extra_clusters;
+      x["merge"] = c.contrast_merge ? "contrast" : "concave";
+      x["segments"] = c.number_of_segments;
+      x["concave_normalized_cut_before_graph_cut"] = c.normalized_cut_before_graph_cut;
+      x["concave_normalized_cut"] = c.normalized_cut;
+      x["kept"] = c.kept;
+      candidates.append(x);
+    }
+    d["candidates"] = candidates;
+  }
   return labels_result(*out.m, out.r.labels, d, report);
 }
 

@@ -296,6 +296,9 @@ run_cli_json(extra_clusters 8 segment ${WORK}/quads.off --k 2 --contrast-merge-c
              --json -)
 run_cli_json(extra_clusters 2 segment ${WORK}/quads.off --k 2 --contrast-merge-clusters 0 --alternative-extra-clusters 3
              --min-candidate-clusters 0 --labels ${WORK}/q.seg --json -)
+# every candidate tried is in the report, in the order tried
+run_cli_json("candidates;1;extra_clusters" 3 segment ${WORK}/quads.off --k 2 --contrast-merge-clusters 0
+             --alternative-extra-clusters 3 --min-candidate-clusters 0 --labels ${WORK}/q.seg --json -)
 run_cli_json("scores;rand_index_error" 0.0 eval --mesh ${WORK}/quads.off ${WORK}/q.seg ${WORK}/q.seg --json -)
 run_cli(0 "labels: .*q.seg" segment ${WORK}/quads.off --k 2 --labels ${WORK}/q.seg --json -)
 

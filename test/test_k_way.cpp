@@ -1424,6 +1424,30 @@ TEST_CASE("k-way with alternative extra clusters keeps the result with the lower
     CHECK(c.number_of_segments == k);
     CHECK(c.clusters.centroids.rows() == Eigen::Index(k + c.extra_clusters));
     CHECK(c.embedding.samples == lower.embedding.samples);
+    // every candidate reported in the order tried, the kept one flagged,
+    // each with its own cuts and, when asked, its own labels
+    CHECK(a.candidates.empty());
+    REQUIRE(c.candidates.size() == 2);
+    CHECK(c.candidates[0].extra_clusters == 0);
+    CHECK(c.candidates[1].extra_clusters == 6);
+    CHECK(c.candidates[0].normalized_cut == Approx(na));
+    CHECK(c.candidates[1].normalized_cut == Approx(nb));
+    CHECK(c.candidates[nb < na ? 1 : 0].kept);
+    CHECK_FALSE(c.candidates[nb < na ? 0 : 1].kept);
+    for(const K_way_candidate& candidate : c.candidates)
+    {
+      CHECK_FALSE(candidate.contrast_merge);
+      CHECK(candidate.normalized_cut_before_graph_cut > 0.);
+      CHECK(candidate.number_of_segments == k);
+      CHECK(candidate.labels.empty());
+    }
+    K_way_options keep = both;
+    keep.keep_candidate_labels = true;
+    const K_way_result kept = segment_k_way(s.weighted, k, keep);
+    REQUIRE(kept.candidates.size() == 2);
+    CHECK(kept.labels == c.labels);
+    CHECK(kept.candidates[0].labels == a.labels);
+    CHECK(kept.candidates[1].labels == b.labels);
     // the candidates run side by side on several threads, one after the
     // other on one: the same result
     const K_way_result one = segment_k_way(s.weighted, k, both, Execution(1));
@@ -1532,6 +1556,11 @@ TEST_CASE("k-way tries the contrast merge cut at k and keeps it when its concave
     CHECK(c.extra_clusters == (contrast ? std::max(clusters, k) - k : a.extra_clusters));
     CHECK(c.normalized_cut == Approx(std::min(na, nd)));
     CHECK(c.number_of_segments == k);
+    REQUIRE(c.candidates.size() == 2); // alone's over-segmentation, then the contrast merge
+    CHECK_FALSE(c.candidates.front().contrast_merge);
+    CHECK(c.candidates.back().contrast_merge);
+    CHECK(c.candidates.back().kept == contrast);
+    CHECK(c.candidates.back().normalized_cut == Approx(nd));
     if(contrast)
       CHECK(c.hierarchy.nodes.size() == d.hierarchy.nodes.size());
     (contrast ? kept_contrast : kept_concave) = true;

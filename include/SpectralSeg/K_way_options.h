@@ -153,6 +153,12 @@ struct Basic_K_way_options
   /// kernel width and the other fields are kept).
   bool keep_embedding_coordinates = true;
 
+  /// whether each candidate over-segmentation's final labels are kept in
+  /// `K_way_result::candidates` (one label vector per candidate), so that
+  /// every candidate, not only the kept one, can be looked at or scored;
+  /// off by default (the labels cost memory)
+  bool keep_candidate_labels = false;
+
   /// the thesis's k-way method: K-means with exactly `k` clusters, the
   /// thesis's graph cut, no crease split
   static Basic_K_way_options thesis()
@@ -193,6 +199,7 @@ struct Basic_K_way_options
     o.crease_angle = crease_angle;
     o.flat_seam_angle = flat_seam_angle;
     o.keep_embedding_coordinates = keep_embedding_coordinates;
+    o.keep_candidate_labels = keep_candidate_labels;
     return o;
   }
 };
@@ -232,6 +239,32 @@ struct Basic_K_way_automatic_options
 typedef Basic_K_way_automatic_options<Kernels::Exponential_kernel> K_way_automatic_options;
 
 /// \ingroup PkgSpectralSegKWay
+/// \brief One over-segmentation that `segment_k_way()` tried when it had
+/// several candidates (`K_way_options::alternative_extra_clusters`,
+/// `K_way_options::contrast_merge_clusters`), and how its choice saw it.
+struct K_way_candidate
+{
+  /// its number of extra clusters (K-means clusters minus `k`)
+  std::size_t extra_clusters = 0;
+  /// whether it is the contrast merge's
+  bool contrast_merge = false;
+  /// `Refinement::concave_normalized_cut()` of the segments the graph cut
+  /// started from (after the merge; the K-means clusters on a mesh whose
+  /// components outnumber them)
+  double normalized_cut_before_graph_cut = 0.;
+  /// `Refinement::concave_normalized_cut()` of its final labels: the
+  /// candidate with the lowest is kept
+  double normalized_cut = 0.;
+  /// whether it is the one kept
+  bool kept = false;
+  /// its number of segments
+  std::size_t number_of_segments = 0;
+  /// its final labels, with `K_way_options::keep_candidate_labels` (else
+  /// empty)
+  std::vector<int> labels;
+};
+
+/// \ingroup PkgSpectralSegKWay
 /// \brief What `segment_k_way()` and `segment_k_way_automatic()` produce.
 struct K_way_result
 {
@@ -258,6 +291,9 @@ struct K_way_result
   /// connected component, the answer's first (`Part_hierarchy`; empty when
   /// nothing was merged, as with `extra_clusters` 0)
   Part_hierarchy hierarchy;
+  /// every over-segmentation tried, in the order tried, when there were
+  /// several (else empty)
+  std::vector<K_way_candidate> candidates;
   /// seconds spent in each stage, in order
   std::vector<std::pair<std::string, double>> timings;
 };

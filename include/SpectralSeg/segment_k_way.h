@@ -328,7 +328,9 @@ void refine_clusters(const Weighted_dual_graph& graph, std::size_t k, std::size_
 /// `Refinement::concave_normalized_cut()` is kept (ties to the first tried,
 /// `extra_clusters`): its boundaries follow concave creases best.
 /// `K_way_result::extra_clusters` and `K_way_result::contrast_merge` say
-/// which was kept. The Nyström
+/// which was kept; `K_way_result::candidates` lists every candidate with
+/// its cut before and after its graph cut (and its labels, with
+/// `options.keep_candidate_labels`). The Nyström
 /// farthest-point samples are nested, so the samples and distance rows of
 /// the largest count serve every candidate. Each candidate's embedding,
 /// K-means, merge and graph-cut data terms (the stages that read its
@@ -438,6 +440,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   std::vector<std::vector<std::pair<std::string, double>>> times(specs.size());
   // their graph cuts up to the moves
   std::vector<internal::Pending_cut> cuts(specs.size());
+  // their concave normalized cuts before the graph cut, for the report
+  std::vector<double> before(specs.size(), 0.);
   const bool release = !options.keep_embedding_coordinates;
   const Embedding::Embedding_options& eo = options.embedding;
   // Nyström with farthest-point samples: the samples are nested, so the
@@ -516,6 +520,7 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
                                                     exec.threads());
       if(cuts[i].run)
         t("graph cut");
+      before[i] = Refinement::concave_normalized_cut(graph.graph(), c.labels, options.cut_angle_scale);
       if(i + 1 == specs.size() || exec.threads() < 2)
       {
         refine(i, exec);
@@ -543,6 +548,18 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   for(std::size_t i = 1; i < candidates.size(); ++i)
     if(candidates[i].normalized_cut < candidates[kept].normalized_cut) // strict: ties to the first tried
       kept = i;
+  std::vector<K_way_candidate> report(candidates.size());
+  for(std::size_t i = 0; i < candidates.size(); ++i)
+  {
+    report[i].extra_clusters = specs[i].clusters - k;
+    report[i].contrast_merge = specs[i].contrast;
+    report[i].normalized_cut_before_graph_cut = before[i];
+    report[i].normalized_cut = candidates[i].normalized_cut;
+    report[i].kept = i == kept;
+    report[i].number_of_segments = candidates[i].number_of_segments;
+    if(options.keep_candidate_labels)
+      report[i].labels = candidates[i].labels;
+  }
   std::vector<std::pair<std::string, double>> timings = std::move(r.timings); // the shared sampling
   internal::Stage_timer sum(timings, true);
   for(const auto& candidate_times : times)
@@ -550,6 +567,7 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       sum.add(t.first, t.second);
   r = std::move(candidates[kept]);
   r.timings = std::move(timings);
+  r.candidates = std::move(report);
   const Refinement::internal::Merge_history& h = histories[kept];
   if(!h.labels.empty())
     r.hierarchy = internal::hierarchy_from_merges(h.labels, graph.graph().geometry().areas, h.steps, h.answer);

@@ -95,6 +95,12 @@ class KWay(unittest.TestCase):
         # the kept over-segmentation: 20 clusters merged by contrast, or 4 + 2 or 4 + 8 by concave strength
         self.assertIn(report["extra_clusters"], (16,) if report["merge"] == "contrast" else (2, 8))
         self.assertGreaterEqual(report["concave_normalized_cut"], 0)
+        # every over-segmentation tried, the kept one flagged, with the lowest cut
+        kept = [c for c in report["candidates"] if c["kept"]]
+        self.assertEqual(len(kept), 1)
+        self.assertEqual(kept[0]["extra_clusters"], report["extra_clusters"])
+        self.assertEqual(kept[0]["concave_normalized_cut"], report["concave_normalized_cut"])
+        self.assertEqual(min(c["concave_normalized_cut"] for c in report["candidates"]), report["concave_normalized_cut"])
         self.assertIn("metric", report["timings"])
         self.assertIn("graph cut", report["timings"])
         self.assertGreater(report["timings"]["total"], 0)

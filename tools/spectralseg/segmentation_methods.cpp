@@ -292,6 +292,18 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
   }
   if(k > 0 && (!o.alternative_extra_clusters.empty() || o.contrast_merge_clusters > 0))
     report["concave_normalized_cut"] = r.normalized_cut;
+  if(k > 0 && !r.candidates.empty())
+  { // every over-segmentation tried, in order, with the cuts the choice saw
+    nlohmann::ordered_json candidates = nlohmann::ordered_json::array();
+    for(const SpectralSeg::K_way_candidate& c : r.candidates)
+      candidates.push_back({{"extra_clusters", c.extra_clusters},
+                            {"merge", c.contrast_merge ? "contrast" : "concave"},
+                            {"segments", c.number_of_segments},
+                            {"concave_normalized_cut_before_graph_cut", c.normalized_cut_before_graph_cut},
+                            {"concave_normalized_cut", c.normalized_cut},
+                            {"kept", c.kept}});
+    report["candidates"] = candidates;
+  }
   if(r.embedding.exact && o.sampling == "auto")
     for(const char* option : {"--samples", "--seed"})
       if(given(o.cli, option))
