@@ -10,6 +10,7 @@
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -51,11 +52,33 @@ SPECTRALSEG_INLINE double concave_normalized_cut(const Dual_graph& graph, const 
                         " labels, got " + std::to_string(labels.size()));
   if(!(angle_scale > 0.) || !std::isfinite(angle_scale))
     throw Invalid_input("concave_normalized_cut: the angle scale must be a positive number");
-  std::map<int, std::size_t> dense;
+  // segments numbered in the order of their first face: labels in
+  // [0, number of faces) through a table, any others through a map
   std::vector<std::size_t> segment_of(labels.size());
-  for(std::size_t f = 0; f < labels.size(); ++f)
-    segment_of[f] = dense.try_emplace(labels[f], dense.size()).first->second;
-  std::vector<double> cut(dense.size(), 0.), vol(dense.size(), 0.);
+  std::size_t segments = 0;
+  const bool small = std::all_of(labels.begin(), labels.end(),
+                                 [&](int l) { return l >= 0 && std::size_t(l) < labels.size(); });
+  if(small)
+  {
+    const std::size_t none = std::size_t(-1);
+    std::vector<std::size_t> dense(labels.empty() ? 0 : std::size_t(*std::max_element(labels.begin(), labels.end())) + 1,
+                                   none);
+    for(std::size_t f = 0; f < labels.size(); ++f)
+    {
+      std::size_t& d = dense[std::size_t(labels[f])];
+      if(d == none)
+        d = segments++;
+      segment_of[f] = d;
+    }
+  }
+  else
+  {
+    std::map<int, std::size_t> dense;
+    for(std::size_t f = 0; f < labels.size(); ++f)
+      segment_of[f] = dense.try_emplace(labels[f], dense.size()).first->second;
+    segments = dense.size();
+  }
+  std::vector<double> cut(segments, 0.), vol(segments, 0.);
   for(std::size_t d = 0; d < graph.number_of_edges(); ++d) // in edge order: thread-independent
   {
     const Dual_graph::Edge& e = graph.edge(static_cast<Dual_graph::size_type>(d));
