@@ -730,10 +730,14 @@ int run(int argc, char** argv)
                                                             : run_kway(mo, g, k, log_candidates ? &candidates : nullptr);
       const std::string method_name = method == "kway" && o.auto_k > 0 ? "kway-auto" : method;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      double ri = 0;
-      for(const auto& h : humans)
-        ri += SpectralSeg::Evaluation::rand_index_error(labels, h);
-      ri /= double(humans.size());
+      // Rand-index error against each human, averaged over the humans
+      const auto mean_error = [&humans](const std::vector<int>& l) {
+        double sum = 0;
+        for(const auto& h : humans)
+          sum += SpectralSeg::Evaluation::rand_index_error(l, h);
+        return sum / double(humans.size());
+      };
+      const double ri = mean_error(labels);
       Row r{id, category, method_name, g.number_of_faces(), k, 0, ri, seconds, {}};
       r.segments = std::set<int>(labels.begin(), labels.end()).size();
       if(!o.labels_dir.empty())
@@ -759,14 +763,10 @@ int run(int argc, char** argv)
       for(std::size_t i = 0; i < candidates.size(); ++i)
       {
         const SpectralSeg::K_way_candidate& c = candidates[i];
-        double c_ri = 0;
-        for(const auto& h : humans)
-          c_ri += SpectralSeg::Evaluation::rand_index_error(c.labels, h);
-        c_ri /= double(humans.size());
         candidates_out << id << '\t' << category << '\t' << k << '\t' << i << '\t' << c.extra_clusters << '\t'
                        << (c.contrast_merge ? "contrast" : "concave") << '\t' << c.number_of_segments << '\t'
                        << std::setprecision(17) << c.normalized_cut_before_graph_cut << '\t' << c.normalized_cut
-                       << '\t' << std::setprecision(6) << c_ri << '\t' << (c.kept ? 1 : 0) << '\n';
+                       << '\t' << std::setprecision(6) << mean_error(c.labels) << '\t' << (c.kept ? 1 : 0) << '\n';
       }
     }
   }
