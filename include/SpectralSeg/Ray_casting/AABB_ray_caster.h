@@ -115,6 +115,7 @@ private:
   struct Nearest_hit
   {
     double o[3], d[3], inv[3];
+    int lower[3]; // per axis, the Bbox_3 coordinate (min: 0, max: 3) the ray enters the slab by
     double near;  // hits closer than this do not count
     double t;     // the nearest hit so far, or the bound
     bool found = false;
@@ -129,6 +130,7 @@ private:
         o[i] = origin[i];
         d[i] = direction[i];
         inv[i] = 1. / direction[i];
+        lower[i] = inv[i] < 0. ? 3 : 0;
       }
     }
 
@@ -139,26 +141,23 @@ private:
     // where the ray's stretch [near, t] enters the box, or -1 if it misses it
     double entry(const CGAL::Bbox_3& b) const
     {
+      // The slab's near and far planes chosen by the sign of the direction,
+      // so that no swap is needed: the same values as ordering the two. A
+      // zero component gives an infinite inverse, and 0 * inf = NaN where
+      // the origin lies on the slab's plane; std::max and std::min return
+      // their first argument when the second is NaN, so such a slab bounds
+      // nothing, as the origin is inside it.
+      const double box[6] = {b.xmin(), b.ymin(), b.zmin(), b.xmax(), b.ymax(), b.zmax()};
       double lo = near, hi = t;
       for(int i = 0; i < 3; ++i)
       {
-        double a = (b.min(i) - o[i]) * inv[i], c = (b.max(i) - o[i]) * inv[i];
-        if(a > c)
-          std::swap(a, c);
-        if(!(a <= c)) // NaN: a zero direction component on the slab's plane
-        {
-          if(o[i] < b.min(i) || o[i] > b.max(i))
-            return -1.;
-          continue;
-        }
+        const double a = (box[lower[i] + i] - o[i]) * inv[i];
+        const double c = (box[3 - lower[i] + i] - o[i]) * inv[i];
         lo = (std::max)(lo, a);
         hi = (std::min)(hi, c);
-        if(lo > hi)
-          return -1.;
       }
-      return lo;
+      return lo <= hi ? lo : -1.;
     }
-
     template <typename Node>
     bool do_intersect(const Nearest_hit&, const Node& node) const
     {
