@@ -43,6 +43,7 @@
 //   --samples-factor F (Nyström samples F*k+1)  --vsi-fraction F
 //   --reference-fraction F  faces that cast their cone for their reference point (default 1)
 //   --reference-rays N  rays of each face's cone for its reference point (default: the library's, 16)
+//   --reference-smoothing N  smoothing iterations of the reference points (default: the library's, 3)
 //   --reference-cone DEG  full opening angle of that cone (default: the library's, 80)
 //   --over-segmentations N  method contrast: over-segmentations that vote (default: the library's, 5)
 //   --auto-k MAX   choose k itself (segment_k_way_automatic, k in [2, MAX]) instead of k_by_model
@@ -51,6 +52,7 @@
 //   --extra-clusters N  K-means clusters beyond k, merged back (default 3; 0 = thesis)
 //   --alternative-extra-clusters A,B  also tried, the lowest concave normalized cut kept (default: the library's; none: only --extra-clusters)
 //   --contrast-merge-clusters N  the k-way's contrast-merge candidate's clusters (default 20; 0: none)
+//   --contrast-merge-extra E  the contrast-merge candidate's clusters at least k + E (default: no such floor)
 //   --min-candidate-clusters N  k-way's candidates of fewer clusters are not tried (default 6; 0: all)
 //   --cut-angle-scale S  concavity scale (radians) of that normalized cut (default 0.1)
 //   --seed S       start face of the Nyström sampling
@@ -133,6 +135,7 @@ struct Options
   std::size_t samples = 0;
   int extra_clusters = -1;
   int contrast_merge_clusters = -1; // < 0: the default
+  int contrast_merge_extra = -1;    // >= 0: the contrast candidate's clusters at least k plus this many
   int min_candidate_clusters = -1;  // < 0: the default
   std::string alternative_extra_clusters = "-"; // "-": the default; "": none
   double cut_angle_scale = -1;
@@ -148,6 +151,7 @@ struct Options
   double reference_fraction = 1.; // VSI::Reference_point_options::measured_fraction
   std::size_t reference_rays = 0;  // > 0: VSI::Reference_point_options::rays
   double reference_cone = 0.;      // > 0: VSI::Reference_point_options::cone_angle_degrees
+  long reference_smoothing = -1;   // >= 0: VSI::Reference_point_options::smoothing_iterations
   std::size_t over_segmentations = 0; // > 0: Hybrid_options::over_segmentations (method contrast)
   double eta = 0.1, min_part_area = -1.; // < 0: the variant's
   bool structure_only = false, perimeter_base = false, salient_thesis = false;
@@ -278,6 +282,8 @@ std::vector<double> part_aware(const Options& o, const SpectralSeg::Dual_graph& 
     vo.reference.rays = o.reference_rays;
   if(o.reference_cone > 0.)
     vo.reference.cone_angle_degrees = o.reference_cone;
+  if(o.reference_smoothing >= 0)
+    vo.reference.smoothing_iterations = std::size_t(o.reference_smoothing);
   const auto n = o.normalization == "max" ? SpectralSeg::Metrics::Normalization::maximum()
                                           : SpectralSeg::Metrics::Normalization::quantile(0.99);
   return SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma, vo, 0.001, n)(g, exec);
@@ -333,6 +339,8 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
   }
   if(o.contrast_merge_clusters >= 0)
     ko.contrast_merge_clusters = std::size_t(o.contrast_merge_clusters);
+  if(o.contrast_merge_extra >= 0 && ko.contrast_merge_clusters > 0)
+    ko.contrast_merge_clusters = std::max(ko.contrast_merge_clusters, k + std::size_t(o.contrast_merge_extra));
   if(o.min_candidate_clusters >= 0)
     ko.min_candidate_clusters = std::size_t(o.min_candidate_clusters);
   if(o.cut_angle_scale > 0)
@@ -639,6 +647,8 @@ int run(int argc, char** argv)
       o.extra_clusters = std::stoi(next());
     else if(a == "--contrast-merge-clusters")
       o.contrast_merge_clusters = std::stoi(next());
+    else if(a == "--contrast-merge-extra")
+      o.contrast_merge_extra = std::stoi(next());
     else if(a == "--min-candidate-clusters")
       o.min_candidate_clusters = std::stoi(next());
     else if(a == "--alternative-extra-clusters")
@@ -657,6 +667,8 @@ int run(int argc, char** argv)
       o.reference_fraction = std::stod(next());
     else if(a == "--reference-rays")
       o.reference_rays = std::stoul(next());
+    else if(a == "--reference-smoothing")
+      o.reference_smoothing = long(std::stoul(next()));
     else if(a == "--reference-cone")
       o.reference_cone = std::stod(next());
     else if(a == "--over-segmentations")
