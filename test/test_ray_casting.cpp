@@ -281,6 +281,22 @@ TEST_CASE("Ray casting: AABB backend on a cube", "[ray_casting]")
     CHECK(face != f);
     CHECK(face != AABB_ray_caster::no_face);
   }
+
+  // Rays along -z whose origin lies on the planes x = 0.5 or y = -0.5 that
+  // bound the boxes of the tree, with a zero direction component across
+  // them (0 * inf = NaN in the slab test): the top face's edge is hit at
+  // 1.5. A slab test that took the NaN for a miss would find nothing.
+  for(const Eigen::Vector3d& o : {Eigen::Vector3d(0.5, 0.1, 2.), Eigen::Vector3d(0.2, -0.5, 2.),
+                                  Eigen::Vector3d(-0.5, 0.3, 2.)})
+  {
+    AABB_ray_caster::size_type face = AABB_ray_caster::no_face;
+    CHECK(caster.first_hit(o, -Eigen::Vector3d::UnitZ(), AABB_ray_caster::no_face, &face) == Approx(1.5));
+    REQUIRE(face != AABB_ray_caster::no_face);
+    CHECK(cube.normals[face].z() == Approx(1.));
+  }
+  // ... and one beside those planes, outside every box: nothing.
+  CHECK(caster.first_hit(Eigen::Vector3d(0.5 + 1e-3, 0.1, 2.), -Eigen::Vector3d::UnitZ()) ==
+        std::numeric_limits<double>::infinity());
 }
 
 #ifdef SPECTRALSEG_HAS_EMBREE
