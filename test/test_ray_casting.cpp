@@ -617,3 +617,79 @@ TEST_CASE("Ray casting: Embree agrees with AABB on armadillo.off", "[ray_casting
   compare_backends(g, rays, 1e-4, 0.005);
 }
 #endif
+
+// The nearest hit of a ray among all the faces of `g` but `skip`, within
+// [near, max_distance], by a scan of every triangle (Moller-Trumbore);
+// ties go to the smallest face index. {distance, face}, or {inf, no_face}.
+std::pair<double, AABB_ray_caster::size_type> scan_every_face(const Mesh_geometry& g, const Eigen::Vector3d& o,
+                                                             const Eigen::Vector3d& d, AABB_ray_caster::size_type skip,
+                                                             double near, double max_distance)
+{
+  std::pair<double, AABB_ray_caster::size_type> best(infinity, AABB_ray_caster::no_face);
+  for(std::size_t f = 0; f < g.number_of_faces(); ++f)
+  {
+    if(f == skip || g.degenerate[f])
+      continue;
+    const Eigen::Vector3d& p0 = g.points[g.triangles[f][0]];
+    const Eigen::Vector3d e1 = g.points[g.triangles[f][1]] - p0, e2 = g.points[g.triangles[f][2]] - p0;
+    const Eigen::Vector3d pv = d.cross(e2);
+    const double det = e1.dot(pv);
+    if(det == 0.)
+      continue;
+    const Eigen::Vector3d s = o - p0;
+    const double u = s.dot(pv) / det;
+    const Eigen::Vector3d q = s.cross(e1);
+    const double v = d.dot(q) / det;
+    const double t = e2.dot(q) / det;
+    if(u < 0. || u > 1. || v < 0. || u + v > 1. || t < near || t > max_distance)
+      continue;
+    if(t < best.first)
+      best = {t, static_cast<AABB_ray_caster::size_type>(f)};
+  }
+  return best;
+}
+
+TEST_CASE("Ray casting: the AABB backend finds the hit a scan of every face finds", "[ray_casting]")
+{
+  const std::string path = shared_mesh("armadillo.off");
+  Mesh_geometry g;
+  if(!std::filesystem::exists(path) || !read_off(path, g))
+  {
+    WARN("skipped: " << path << " not found");
+    return;
+  }
+  REQUIRE(g.number_of_faces() > 1000);
+  const AABB_ray_caster caster(g);
+  const double near = 1e-7 * g.bbox_diagonal;
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<std::uint32_t> any_face(0, std::uint32_t(g.number_of_faces() - 1));
+  std::size_t hits = 0, rays = 0;
+  while(rays < 300)
+  {
+    const std::uint32_t f = any_face(rng);
+    if(g.degenerate[f])
+      continue;
+    ++rays;
+    // into the shape as the metric casts them, and anywhere from a point off the surface
+    const bool inward = rays % 2 == 0;
+    const Eigen::Vector3d o = inward ? g.centroids[f] : Eigen::Vector3d(g.centroids[f] + 0.01 * g.bbox_diagonal * random_unit(rng));
+    const Eigen::Vector3d d = inward ? random_in_cone(-g.normals[f], 1.4, rng) : random_unit(rng);
+    const AABB_ray_caster::size_type skip = inward ? f : AABB_ray_caster::no_face;
+    const auto expected = scan_every_face(g, o, d, skip, near, infinity);
+    AABB_ray_caster::size_type face = AABB_ray_caster::no_face;
+    const double t = caster.first_hit(o, d, skip, &face);
+    CHECK(face == expected.second);
+    if(expected.second == AABB_ray_caster::no_face)
+    {
+      CHECK(t == infinity);
+      continue;
+    }
+    ++hits;
+    CHECK(t == Approx(expected.first).epsilon(1e-12));
+    // a bound short of the hit leaves nothing; a bound beyond it the same hit
+    CHECK(caster.first_hit(o, d, skip, nullptr, 0.5 * expected.first) ==
+          scan_every_face(g, o, d, skip, near, 0.5 * expected.first).first);
+    CHECK(caster.first_hit(o, d, skip, nullptr, 2. * expected.first) == Approx(expected.first).epsilon(1e-12));
+  }
+  CHECK(hits > 150);
+}
