@@ -51,6 +51,7 @@ class AABB_ray_caster
   typedef CGAL::AABB_traits<K, Primitive> Base_traits;
 #endif
 
+  /// \cond SKIP_IN_MANUAL
   // CGAL's traits, but a node's triangles are split at the median of their
   // centroids along the longest axis of its box, instead of the median of
   // their first vertices (CGAL's reference point): the children's boxes
@@ -75,6 +76,7 @@ class AABB_ray_caster
     };
     Split_primitives split_primitives_object() const { return Split_primitives(); }
   };
+  /// \endcond
   typedef CGAL::AABB_tree<Traits> Tree;
 
 public:
