@@ -184,6 +184,17 @@ Mesh_geometry icosphere(int subdivisions, const Eigen::Vector3d& centre = Eigen:
 #endif
 }
 
+// Reads a mesh of ../shared/data/meshes into `g`; false, with a warning
+// that the test is skipped, if it is not there.
+[[maybe_unused]] bool read_shared_mesh(const std::string& name, Mesh_geometry& g)
+{
+  const std::string path = shared_mesh(name);
+  if(std::filesystem::exists(path) && read_off(path, g))
+    return true;
+  WARN("skipped: " << path << " not found");
+  return false;
+}
+
 Eigen::Vector3d random_unit(std::mt19937& rng)
 {
   std::normal_distribution<double> normal;
@@ -593,13 +604,9 @@ TEMPLATE_TEST_CASE("Ray casting: concurrent queries", "[ray_casting]", SPECTRALS
 #ifdef SPECTRALSEG_HAS_EMBREE
 TEST_CASE("Ray casting: Embree agrees with AABB on armadillo.off", "[ray_casting][embree]")
 {
-  const std::string path = shared_mesh("armadillo.off");
   Mesh_geometry g;
-  if(!std::filesystem::exists(path) || !read_off(path, g))
-  {
-    WARN("skipped: " << path << " not found");
+  if(!read_shared_mesh("armadillo.off", g))
     return;
-  }
   REQUIRE(g.number_of_faces() > 1000);
   std::mt19937 rng(42);
   std::uniform_int_distribution<std::uint32_t> any_face(0, std::uint32_t(g.number_of_faces() - 1));
@@ -651,13 +658,9 @@ std::pair<double, AABB_ray_caster::size_type> scan_every_face(const Mesh_geometr
 
 TEST_CASE("Ray casting: the AABB backend finds the hit a scan of every face finds", "[ray_casting]")
 {
-  const std::string path = shared_mesh("armadillo.off");
   Mesh_geometry g;
-  if(!std::filesystem::exists(path) || !read_off(path, g))
-  {
-    WARN("skipped: " << path << " not found");
+  if(!read_shared_mesh("armadillo.off", g))
     return;
-  }
   REQUIRE(g.number_of_faces() > 1000);
   const AABB_ray_caster caster(g);
   const double near = 1e-7 * g.bbox_diagonal;
