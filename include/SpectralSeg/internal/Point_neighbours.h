@@ -45,6 +45,9 @@ public:
   // ties are broken by index so that the result is deterministic.
   std::vector<std::pair<std::size_t, double>> nearest(const Eigen::Vector3d& q, std::size_t k) const;
 
+  // The same into `out` (cleared first), so that a caller reuses its storage.
+  void nearest(const Eigen::Vector3d& q, std::size_t k, std::vector<std::pair<std::size_t, double>>& out) const;
+
 private:
   std::vector<K::Point_3> points_;
   Point_map map_;
@@ -69,8 +72,16 @@ SPECTRALSEG_INLINE std::vector<std::pair<std::size_t, double>> Point_neighbours:
                                                                                          std::size_t k) const
 {
   std::vector<std::pair<std::size_t, double>> out;
+  nearest(q, k, out);
+  return out;
+}
+
+SPECTRALSEG_INLINE void Point_neighbours::nearest(const Eigen::Vector3d& q, std::size_t k,
+                                                  std::vector<std::pair<std::size_t, double>>& out) const
+{
+  out.clear();
   if(points_.empty() || k == 0)
-    return out;
+    return;
   const Search search(*tree_, K::Point_3(q.x(), q.y(), q.z()), static_cast<unsigned int>(k), 0, true,
                       Distance(map_));
   for(const auto& n : search)
@@ -78,7 +89,6 @@ SPECTRALSEG_INLINE std::vector<std::pair<std::size_t, double>> Point_neighbours:
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
     return a.second < b.second || (a.second == b.second && a.first < b.first);
   });
-  return out;
 }
 #endif
 

@@ -226,19 +226,35 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
   if(options.smoothing_iterations == 0 || n < 2)
     return out;
 
-  // Neighbourhood graph: mesh neighbours plus Euclidean neighbours of the points.
-  std::vector<std::vector<std::uint32_t>> neighbours(n);
+  // Neighbourhood graph: mesh neighbours plus Euclidean neighbours of the
+  // points, face f's ascending in nb[f * stride], ..., nb[f * stride +
+  // count[f] - 1] (one array for all: no allocation per face).
+  std::size_t degree = 0;
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    std::size_t d = 0;
+    graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f), [&](Dual_graph::size_type, Dual_graph::size_type) {
+      ++d;
+    });
+    degree = std::max(degree, d);
+  }
+  const std::size_t stride = degree + options.euclidean_neighbours + 1;
+  std::vector<std::uint32_t> nb(n * stride);
+  std::vector<std::uint32_t> count(n, 0);
   {
     const internal::Point_neighbours knn(out.points);
     internal::parallel_for(n, exec, "reference point neighbours", [&](std::size_t f) {
-      std::vector<std::uint32_t>& nb = neighbours[f];
+      thread_local std::vector<std::pair<std::size_t, double>> nearest;
+      std::uint32_t* list = nb.data() + f * stride;
+      std::size_t size = 0;
       graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f),
-                               [&](Dual_graph::size_type g, Dual_graph::size_type) { nb.push_back(g); });
-      for(const auto& q : knn.nearest(out.points[f], options.euclidean_neighbours + 1))
+                               [&](Dual_graph::size_type g, Dual_graph::size_type) { list[size++] = g; });
+      knn.nearest(out.points[f], options.euclidean_neighbours + 1, nearest);
+      for(const auto& q : nearest)
         if(q.first != f)
-          nb.push_back(static_cast<std::uint32_t>(q.first));
-      std::sort(nb.begin(), nb.end());
-      nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+          list[size++] = static_cast<std::uint32_t>(q.first);
+      std::sort(list, list + size);
+      count[f] = static_cast<std::uint32_t>(std::unique(list, list + size) - list);
     });
   }
 
@@ -247,15 +263,15 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
   for(std::size_t it = 0; it < options.smoothing_iterations; ++it)
   {
     internal::parallel_range(0, n, exec.threads(), [&](std::size_t f) {
-      if(neighbours[f].empty())
+      if(count[f] == 0)
       {
         next[f] = out.points[f];
         return;
       }
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for(std::uint32_t g : neighbours[f])
-        mean += out.points[g];
-      mean /= double(neighbours[f].size());
+      for(std::size_t i = 0; i < count[f]; ++i)
+        mean += out.points[nb[f * stride + i]];
+      mean /= double(count[f]);
       next[f] = (1. - options.smoothing_step) * out.points[f] + options.smoothing_step * mean;
     });
     out.points.swap(next);
@@ -279,8 +295,9 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
     ++out.relocated;
     double best = std::numeric_limits<double>::infinity();
     fixed[f] = start[f]; // fallback: the unsmoothed point, inside by construction
-    for(std::uint32_t g : neighbours[f])
+    for(std::size_t i = 0; i < count[f]; ++i)
     {
+      const std::uint32_t g = nb[f * stride + i];
       const double d2 = (out.points[g] - out.points[f]).squaredNorm();
       if(inside[g] && d2 < best)
       {

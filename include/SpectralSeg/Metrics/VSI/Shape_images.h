@@ -113,10 +113,14 @@ Shape_images compute_shape_images(const std::vector<Eigen::Vector3d>& reference_
   const internal::Point_neighbours knn(sample_points);
   const std::size_t k_nb = std::max<std::size_t>(1, options.interpolation_neighbours);
   internal::parallel_for(n, exec, "shape image interpolation", [&](std::size_t f) {
-    auto nearest = knn.nearest(reference_points[f], k_nb);
+    // each thread's storage, reused from face to face
+    thread_local std::vector<std::pair<std::size_t, double>> nearest;
+    thread_local std::vector<double> sum, wsum;
+    knn.nearest(reference_points[f], k_nb, nearest);
     if(!nearest.empty() && nearest.front().second == 0.)
       nearest.resize(1); // a sampled face (or a coincident point) keeps its own image
-    std::vector<double> sum(m, 0.), wsum(m, 0.);
+    sum.assign(m, 0.);
+    wsum.assign(m, 0.);
     for(const auto& q : nearest)
     {
       const double w = q.second > 0 ? 1. / q.second : 1.;
