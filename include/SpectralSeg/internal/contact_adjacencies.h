@@ -151,9 +151,11 @@ SPECTRALSEG_INLINE std::vector<Contact> contact_adjacencies(
   std::vector<double> near_distance; // squared
   near_vertex.reserve(positions.size() * neighbours);
   near_distance.reserve(positions.size() * neighbours);
+  std::vector<std::pair<std::size_t, double>> nearest; // reused from vertex to vertex
   for(std::size_t i = 0; i < positions.size(); ++i)
   {
-    for(const auto& q : tree.nearest(positions[i], neighbours))
+    tree.nearest(positions[i], neighbours, nearest);
+    for(const auto& q : nearest)
     {
       near_vertex.push_back(static_cast<std::uint32_t>(q.first));
       near_distance.push_back(q.second);
