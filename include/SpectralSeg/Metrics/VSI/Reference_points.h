@@ -227,29 +227,30 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
     return out;
 
   // Neighbourhood graph: mesh neighbours plus Euclidean neighbours of the
-  // points, face f's ascending in nb[f * stride], ..., nb[f * stride +
-  // count[f] - 1] (one array for all: no allocation per face).
-  std::size_t degree = 0;
+  // points, face f's ascending in nb[first[f]], ..., nb[first[f] + count[f]
+  // - 1] (one array for all, room for each face's own degree plus the
+  // searched neighbours: no allocation per face).
+  const std::size_t searched = options.euclidean_neighbours + 1;
+  std::vector<std::size_t> first(n + 1, 0);
   for(std::size_t f = 0; f < n; ++f)
   {
     std::size_t d = 0;
     graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f), [&](Dual_graph::size_type, Dual_graph::size_type) {
       ++d;
     });
-    degree = std::max(degree, d);
+    first[f + 1] = first[f] + d + searched;
   }
-  const std::size_t stride = degree + options.euclidean_neighbours + 1;
-  std::vector<std::uint32_t> nb(n * stride);
+  std::vector<std::uint32_t> nb(first[n]);
   std::vector<std::uint32_t> count(n, 0);
   {
     const internal::Point_neighbours knn(out.points);
     internal::parallel_for(n, exec, "reference point neighbours", [&](std::size_t f) {
       thread_local std::vector<std::pair<std::size_t, double>> nearest;
-      std::uint32_t* list = nb.data() + f * stride;
+      std::uint32_t* list = nb.data() + first[f];
       std::size_t size = 0;
       graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f),
                                [&](Dual_graph::size_type g, Dual_graph::size_type) { list[size++] = g; });
-      knn.nearest(out.points[f], options.euclidean_neighbours + 1, nearest);
+      knn.nearest(out.points[f], searched, nearest);
       for(const auto& q : nearest)
         if(q.first != f)
           list[size++] = static_cast<std::uint32_t>(q.first);
@@ -270,7 +271,7 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
       }
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();
       for(std::size_t i = 0; i < count[f]; ++i)
-        mean += out.points[nb[f * stride + i]];
+        mean += out.points[nb[first[f] + i]];
       mean /= double(count[f]);
       next[f] = (1. - options.smoothing_step) * out.points[f] + options.smoothing_step * mean;
     });
@@ -297,7 +298,7 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
     fixed[f] = start[f]; // fallback: the unsmoothed point, inside by construction
     for(std::size_t i = 0; i < count[f]; ++i)
     {
-      const std::uint32_t g = nb[f * stride + i];
+      const std::uint32_t g = nb[first[f] + i];
       const double d2 = (out.points[g] - out.points[f]).squaredNorm();
       if(inside[g] && d2 < best)
       {
