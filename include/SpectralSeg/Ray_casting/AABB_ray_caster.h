@@ -233,15 +233,15 @@ private:
 
   Iterator triangle_of_face(size_type f) const
   {
-    // face_of_triangle_ is increasing: binary search
-    const auto it = std::lower_bound(face_of_triangle_.begin(), face_of_triangle_.end(), f);
-    if(it == face_of_triangle_.end() || *it != f)
+    // a table, not a search: it is asked once per ray
+    if(f >= triangle_of_face_.size() || triangle_of_face_[f] == no_face)
       return triangles_.cend();
-    return triangles_.cbegin() + (it - face_of_triangle_.begin());
+    return triangles_.cbegin() + static_cast<std::ptrdiff_t>(triangle_of_face_[f]);
   }
 
   std::vector<K::Triangle_3> triangles_;
   std::vector<size_type> face_of_triangle_;
+  std::vector<size_type> triangle_of_face_; // no_face for a degenerate face
   Tree tree_;
   double near_ = 0.; // hits closer than this do not count
 };
@@ -251,10 +251,12 @@ SPECTRALSEG_INLINE AABB_ray_caster::AABB_ray_caster(const Mesh_geometry& geometr
 {
   triangles_.reserve(geometry.number_of_faces());
   face_of_triangle_.reserve(geometry.number_of_faces());
+  triangle_of_face_.assign(geometry.number_of_faces(), no_face);
   for(std::size_t f = 0; f < geometry.number_of_faces(); ++f)
   {
     if(geometry.degenerate[f])
       continue;
+    triangle_of_face_[f] = static_cast<size_type>(triangles_.size());
     const auto& t = geometry.triangles[f];
     triangles_.emplace_back(point(geometry.points[t[0]]), point(geometry.points[t[1]]),
                             point(geometry.points[t[2]]));
