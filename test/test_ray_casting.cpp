@@ -693,6 +693,15 @@ TEST_CASE("Ray casting: the AABB backend finds the hit a scan of every face find
     // a bound short of the hit leaves nothing; a bound beyond it the same hit
     CHECK(caster.first_hit(o, d, skip, nullptr, 0.5 * expected.first) == infinity);
     CHECK(caster.first_hit(o, d, skip, nullptr, 2. * expected.first) == Approx(expected.first).epsilon(1e-12));
+    // skipping the face hit finds what the scan finds without it
+    if(!inward)
+    {
+      const auto behind = scan_every_face(g, o, d, expected.second, near, infinity);
+      AABB_ray_caster::size_type next = AABB_ray_caster::no_face;
+      caster.first_hit(o, d, expected.second, &next);
+      CHECK(next == behind.second);
+      CHECK(next != expected.second);
+    }
   }
   CHECK(hits > 150);
 }

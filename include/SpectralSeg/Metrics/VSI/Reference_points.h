@@ -233,13 +233,7 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
   const std::size_t searched = options.euclidean_neighbours + 1;
   std::vector<std::size_t> first(n + 1, 0);
   for(std::size_t f = 0; f < n; ++f)
-  {
-    std::size_t d = 0;
-    graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f), [&](Dual_graph::size_type, Dual_graph::size_type) {
-      ++d;
-    });
-    first[f + 1] = first[f] + d + searched;
-  }
+    first[f + 1] = first[f] + graph.degree(static_cast<Dual_graph::size_type>(f)) + searched;
   std::vector<std::uint32_t> nb(first[n]);
   std::vector<std::uint32_t> count(n, 0);
   {
