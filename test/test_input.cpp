@@ -18,6 +18,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "../tools/spectralseg/heap_tuning.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -997,4 +999,36 @@ TEST_CASE("outputs are written all or nothing", "[input][output]")
   std::ifstream again(labels);
   std::string now((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
   CHECK(now == "4\n");
+}
+
+TEST_CASE("the tool's heap prefault sizes and leaves mapped pages at the top of the heap", "[input]")
+{
+  using namespace spectralseg_cli;
+  CHECK(prefault_bytes(1000, ".off", 1) == 0); // one thread: nothing
+  if(std::thread::hardware_concurrency() >= 2)
+  {
+    CHECK(prefault_bytes(1000, ".off", 0) == 12000);
+    CHECK(prefault_bytes(1000, ".ply", 2) == 12000);
+    CHECK(prefault_bytes(1000, ".obj", 2) == 8000);
+    CHECK(prefault_bytes(1000, ".stl", 2) == 3000);
+    CHECK(prefault_bytes(std::uintmax_t(1) << 40, ".off", 2) == max_prefault_bytes);
+  }
+#if defined(__GLIBC__)
+  // as the tool runs: freed memory stays in the one heap
+  keep_freed_memory_in_heap();
+  const std::size_t bytes = std::size_t(32) << 20, page = 4096;
+  prefault_heap(bytes);
+  // the freed block is the free memory at the top of the heap
+  CHECK(mallinfo2().keepcost >= bytes);
+  // an allocation carved from it touches pages already mapped
+  rusage before{}, after{};
+  getrusage(RUSAGE_SELF, &before);
+  char* block = static_cast<char*>(std::malloc(bytes / 2));
+  REQUIRE(block != nullptr);
+  for(std::size_t i = 0; i < bytes / 2; i += page)
+    static_cast<volatile char*>(block)[i] = 1;
+  getrusage(RUSAGE_SELF, &after);
+  std::free(block);
+  CHECK(after.ru_minflt - before.ru_minflt < long(bytes / 2 / page / 10));
+#endif
 }

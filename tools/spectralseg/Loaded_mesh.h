@@ -5,6 +5,7 @@
 #define SPECTRALSEG_TOOLS_LOADED_MESH_H
 
 #include "Progress_printer.h"
+#include "heap_tuning.h"
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/evaluation.h>
@@ -33,9 +34,11 @@ struct Loaded_mesh
   // is built (the graph holds all the geometry the methods and the picture
   // use; only the mesh outputs need the mesh): on a large mesh it is a
   // twentieth of the peak memory of a segmentation. The reading's sorts run
-  // on `threads` threads (0: all).
+  // on `threads` threads (0: all); with more than one, the heap memory the
+  // file will need is faulted in on two threads first (prefault_heap()).
   Loaded_mesh(const std::string& path, const Progress_printer& out, bool keep_mesh = true, unsigned threads = 0)
   {
+    prefault_heap_for_mesh_file(path, threads);
     report = SpectralSeg::IO::read_mesh_file(path, mesh, SpectralSeg::parameters::number_of_threads(threads));
     for(const std::string& w : report.warnings)
       out.message("warning: " + w);

@@ -9,6 +9,7 @@
 #include "command_retrieval.h"
 #include "command_segment.h"
 #include "Argument_checks.h"
+#include "heap_tuning.h"
 
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/version.h>
@@ -25,10 +26,6 @@
 #include <iostream>
 #include <new>
 #include <string>
-
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 
 namespace {
 
@@ -59,28 +56,7 @@ int main(int argc, char** argv)
   // over a file-size limit (ulimit -f), writes fail with EFBIG and are
   // reported, instead of the process being killed with a half-written file
   std::signal(SIGXFSZ, SIG_IGN);
-#if defined(__GLIBC__)
-  // glibc serves blocks above 128 KB to 32 MB with mmap and gives them back
-  // on free, and gives the free memory at the top of a heap back above 128
-  // KB; the next stage then page-faults the same amount in again. A
-  // segmentation allocates and frees many such arrays (the mesh, the dual
-  // graph, the rays' hits, the embedding, the max-flow graphs of the graph
-  // cut), so keep them in the heap, the heaps of other threads included
-  // (doc/benchmarks.md): less time, a few percent more peak memory. The
-  // library leaves malloc alone; programs may do the same.
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  // Kept memory stays in the heap of the thread that freed it, and glibc
-  // gives up to eight heaps per core to the threads: the worker threads of
-  // the metric, the embedding and the candidates' graph cuts each kept
-  // their high-water mark (doc/benchmarks.md). One heap for every thread
-  // lets a thread reuse what another freed: the candidates' graph cuts in
-  // a second thread reuse the embeddings freed in the first (armadillo
-  // 832,000 faces: a resident peak 3-13 MB lower than with one heap per
-  // core, and less dependent on which thread takes which candidate;
-  // doc/benchmarks.md).
-  mallopt(M_ARENA_MAX, 1);
-#endif
+  keep_freed_memory_in_heap(); // heap_tuning.h
   CLI::App app{"spectralseg: part-aware spectral segmentation of triangle meshes"};
   app.require_subcommand(1);
   app.fallthrough();
