@@ -76,12 +76,20 @@ inline void prefault_heap(std::size_t bytes)
   };
   std::atomic<char*> shared(nullptr);
   std::atomic<bool> given(false);
-  std::thread other([&] {
-    while(!given.load())
-      std::this_thread::yield();
-    if(char* block = shared.load())
-      touch(block, half, bytes);
-  });
+  std::thread other;
+  try
+  {
+    other = std::thread([&] {
+      while(!given.load())
+        std::this_thread::yield();
+      if(char* block = shared.load())
+        touch(block, half, bytes);
+    });
+  }
+  catch(const std::system_error&)
+  {
+    return; // no thread to spare: the pages fault in where they are used
+  }
   char* block = static_cast<char*>(std::malloc(bytes));
   shared = block;
   given = true;
