@@ -21,6 +21,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace SpectralSeg {
@@ -234,13 +236,15 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
   std::vector<std::size_t> first(n + 1, 0);
   for(std::size_t f = 0; f < n; ++f)
     first[f + 1] = first[f] + graph.degree(static_cast<Dual_graph::size_type>(f)) + searched;
-  std::vector<std::uint32_t> nb(first[n]);
+  // not zeroed: each face's list is written by the loop below before it is
+  // read, on every thread, which also touches the pages first
+  const std::unique_ptr<std::uint32_t[]> nb(new std::uint32_t[first[n]]);
   std::vector<std::uint32_t> count(n, 0);
   {
     const internal::Point_neighbours knn(out.points);
     internal::parallel_for(n, exec, "reference point neighbours", [&](std::size_t f) {
       thread_local std::vector<std::pair<std::size_t, double>> nearest;
-      std::uint32_t* list = nb.data() + first[f];
+      std::uint32_t* list = nb.get() + first[f];
       std::size_t size = 0;
       graph.for_each_neighbour(static_cast<Dual_graph::size_type>(f),
                                [&](Dual_graph::size_type g, Dual_graph::size_type) { list[size++] = g; });
@@ -282,14 +286,16 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
     if(len > 0 && caster.first_hit(start[f], step / len) < len)
       inside[f] = 0;
   });
-  std::vector<Eigen::Vector3d> fixed = out.points;
+  // each point that left moves to its nearest neighbour still inside, or
+  // back to its start; chosen among the points before any move
+  std::vector<std::pair<std::size_t, Eigen::Vector3d>> moves;
   for(std::size_t f = 0; f < n; ++f)
   {
     if(inside[f])
       continue;
     ++out.relocated;
     double best = std::numeric_limits<double>::infinity();
-    fixed[f] = start[f]; // fallback: the unsmoothed point, inside by construction
+    Eigen::Vector3d to = start[f]; // fallback: the unsmoothed point, inside by construction
     for(std::size_t i = 0; i < count[f]; ++i)
     {
       const std::uint32_t g = nb[first[f] + i];
@@ -297,11 +303,13 @@ Reference_points compute_reference_points(const Dual_graph& graph, const RayCast
       if(inside[g] && d2 < best)
       {
         best = d2;
-        fixed[f] = out.points[g];
+        to = out.points[g];
       }
     }
+    moves.emplace_back(f, to);
   }
-  out.points.swap(fixed);
+  for(const auto& m : moves)
+    out.points[m.first] = m.second;
   return out;
 }
 
