@@ -40,6 +40,7 @@
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -1001,25 +1002,93 @@ TEST_CASE("outputs are written all or nothing", "[input][output]")
   CHECK(now == "4\n");
 }
 
-TEST_CASE("the tool's heap prefault sizes and leaves mapped pages at the top of the heap", "[input]")
+// The VmFlags line of the mapping of this process that holds `address`
+// (/proc/self/smaps), or "" when there is none.
+static std::string mapping_flags(const void* address)
+{
+  std::ifstream smaps("/proc/self/smaps");
+  const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(address);
+  bool inside = false;
+  for(std::string line; std::getline(smaps, line);)
+  {
+    unsigned long long from = 0, to = 0;
+    if(std::sscanf(line.c_str(), "%llx-%llx ", &from, &to) == 2 && line.find(':') > line.find(' '))
+      inside = from <= a && a < to;
+    else if(inside && line.rfind("VmFlags:", 0) == 0)
+      return line;
+  }
+  return "";
+}
+
+TEST_CASE("the tool's heap preparation sizes, chooses the page size and leaves mapped pages at the top of the heap",
+          "[input]")
 {
   using namespace spectralseg_cli;
-  CHECK(prefault_bytes(1000, ".off", 1) == 0); // one thread: nothing
+  // one thread: a page size chosen, nothing faulted in ahead
+  CHECK(heap_preparation(1000, ".off", 1).page_choice_bytes == 32000);
+  CHECK(heap_preparation(1000, ".off", 1).prefault_bytes == 0);
+  CHECK(heap_preparation(1000, ".obj", 1).page_choice_bytes == 24000);
+  CHECK(heap_preparation(1000, ".stl", 1).page_choice_bytes == 8000);
+  CHECK(heap_preparation(std::uintmax_t(1) << 40, ".off", 1).page_choice_bytes == max_prefault_bytes);
+  // glibc's own choice is left alone
+  CHECK(heap_preparation(1000, ".off", 1, "glibc.malloc.hugetlb=0").page_choice_bytes == 0);
+  CHECK(heap_preparation(1000, ".off", 1, "glibc.malloc.tcache_count=0:glibc.malloc.hugetlb=1").page_choice_bytes ==
+        0);
+  CHECK(heap_preparation(1000, ".off", 1, "glibc.malloc.tcache_count=0").page_choice_bytes == 32000);
   if(std::thread::hardware_concurrency() >= 2)
   {
-    CHECK(prefault_bytes(1000, ".off", 0) == 12000);
-    CHECK(prefault_bytes(1000, ".ply", 2) == 12000);
-    CHECK(prefault_bytes(1000, ".obj", 2) == 8000);
-    CHECK(prefault_bytes(1000, ".stl", 2) == 3000);
-    CHECK(prefault_bytes(std::uintmax_t(1) << 40, ".off", 2) == max_prefault_bytes);
+    CHECK(heap_preparation(1000, ".off", 0).prefault_bytes == 12000);
+    CHECK(heap_preparation(1000, ".ply", 2).prefault_bytes == 12000);
+    CHECK(heap_preparation(1000, ".ply", 2).page_choice_bytes == 32000);
+    CHECK(heap_preparation(1000, ".obj", 2).prefault_bytes == 8000);
+    CHECK(heap_preparation(1000, ".stl", 2).prefault_bytes == 3000);
+    CHECK(heap_preparation(std::uintmax_t(1) << 40, ".off", 2).prefault_bytes == max_prefault_bytes);
   }
+  const std::size_t huge = std::size_t(2) << 20;
+#if defined(__linux__)
+  if(std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled"))
+  {
+    // 2 MB timed in 4 KB pages, 4 MB in huge pages, the rest as chosen
+    void* raw = std::malloc(7 * huge);
+    REQUIRE(raw != nullptr);
+    char* block = static_cast<char*>(raw);
+    char* first = block + (huge - reinterpret_cast<std::uintptr_t>(block) % huge) % huge;
+    CHECK(mapping_flags(first).find(" hg") == std::string::npos);
+    CHECK(mapping_flags(first).find(" nh") == std::string::npos);
+    const bool chosen = choose_page_size(block, 7 * huge);
+    CHECK(mapping_flags(first).find(" nh") != std::string::npos);
+    CHECK(mapping_flags(first + huge).find(" hg") != std::string::npos);
+    CHECK(mapping_flags(first + 2 * huge).find(" hg") != std::string::npos);
+    CHECK(mapping_flags(first + 3 * huge).find(chosen ? " hg" : " nh") != std::string::npos);
+    CHECK(mapping_flags(first + 5 * huge).find(chosen ? " hg" : " nh") != std::string::npos);
+    if(first != block)
+      CHECK(mapping_flags(first - 1).find(" hg") == std::string::npos);
+    // too small to time both: nothing changed
+    void* small = std::malloc(4 * huge);
+    REQUIRE(small != nullptr);
+    CHECK(!choose_page_size(static_cast<char*>(small), 4 * huge - 1));
+    std::free(small);
+    std::free(raw);
+  }
+#endif
 #if defined(__GLIBC__)
   // as the tool runs: freed memory stays in the one heap
   keep_freed_memory_in_heap();
   const std::size_t bytes = std::size_t(32) << 20, page = 4096;
-  prefault_heap(bytes);
-  // the freed block is the free memory at the top of the heap
-  CHECK(mallinfo2().keepcost >= bytes);
+  Heap_preparation plan;
+  plan.prefault_bytes = bytes;
+  plan.page_choice_bytes = 2 * bytes;
+  prepare_heap(plan);
+  // the freed block is the free memory at the top of the heap, its page
+  // size chosen
+  CHECK(mallinfo2().keepcost >= 2 * bytes);
+#if defined(__linux__)
+  if(std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled"))
+  {
+    const std::string flags = mapping_flags(static_cast<char*>(sbrk(0)) - bytes);
+    CHECK((flags.find(" hg") != std::string::npos || flags.find(" nh") != std::string::npos));
+  }
+#endif
   // an allocation carved from it touches pages already mapped
   rusage before{}, after{};
   getrusage(RUSAGE_SELF, &before);
@@ -1031,4 +1100,5 @@ TEST_CASE("the tool's heap prefault sizes and leaves mapped pages at the top of 
   std::free(block);
   CHECK(after.ru_minflt - before.ru_minflt < long(bytes / 2 / page / 10));
 #endif
+  (void)huge;
 }

@@ -34,11 +34,12 @@ struct Loaded_mesh
   // is built (the graph holds all the geometry the methods and the picture
   // use; only the mesh outputs need the mesh): on a large mesh it is a
   // twentieth of the peak memory of a segmentation. The reading's sorts run
-  // on `threads` threads (0: all); with more than one, the heap memory the
-  // file will need is faulted in on two threads first (prefault_heap()).
+  // on `threads` threads (0: all); the heap memory the file will need is
+  // advised for huge pages and, with more than one thread, faulted in on two
+  // threads first (prepare_heap()).
   Loaded_mesh(const std::string& path, const Progress_printer& out, bool keep_mesh = true, unsigned threads = 0)
   {
-    prefault_heap_for_mesh_file(path, threads);
+    prepare_heap_for_mesh_file(path, threads);
     report = SpectralSeg::IO::read_mesh_file(path, mesh, SpectralSeg::parameters::number_of_threads(threads));
     for(const std::string& w : report.warnings)
       out.message("warning: " + w);
