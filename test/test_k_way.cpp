@@ -615,6 +615,11 @@ TEST_CASE("most typical over-segmentation: the medoid of the merges, coarser clu
   // else the eligible of least summed distance
   CHECK(internal::medoid_labelling({other, halves, renamed}, {2, 2, 2}, area, {1, 0, 0}) == 0);
   CHECK(internal::medoid_labelling({other, halves, renamed}, {2, 2, 2}, area, {1, 0, 1}) == 2);
+  // the pairs on two threads: the same choices
+  CHECK(internal::medoid_labelling({other, halves, renamed}, {2, 2, 2}, area, {}, 2) == 1);
+  CHECK(internal::medoid_labelling({halves, other, renamed, whole}, {2, 2, 2, 1}, area, {}, 2) ==
+        internal::medoid_labelling({halves, other, renamed, whole}, {2, 2, 2, 1}, area));
+  CHECK(internal::medoid_labelling({other, halves, renamed}, {2, 2, 2}, area, {1, 0, 1}, 2) == 2);
   // coarser clusterings: K-means on four blobs from four clusters joined to
   // 2 by Ward's rule joins the blobs that are near each other
   Eigen::MatrixXd points(8, 1);

@@ -59,21 +59,30 @@ SPECTRALSEG_INLINE double rand_distance(const std::vector<int>& x, std::size_t a
 // the one whose summed rand_distance() to the others is smallest (ties:
 // the first). With `eligible` (one flag per labelling, at least one set),
 // the one of least sum among those flagged; every labelling still counts
-// in the sums.
+// in the sums. The pairs' distances are computed on `threads` threads and
+// summed in one order: the same result on any number.
 SPECTRALSEG_INLINE std::size_t medoid_labelling(const std::vector<std::vector<int>>& labellings,
                                                 const std::vector<std::size_t>& counts, const std::vector<double>& area,
-                                                const std::vector<char>& eligible = std::vector<char>())
+                                                const std::vector<char>& eligible = std::vector<char>(),
+                                                unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   const std::size_t m = labellings.size();
-  std::vector<double> sum(m, 0.);
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for(std::size_t i = 0; i < m; ++i)
     for(std::size_t j = i + 1; j < m; ++j)
-    {
-      const double d = rand_distance(labellings[i], counts[i], labellings[j], counts[j], area);
-      sum[i] += d;
-      sum[j] += d;
-    }
+      pairs.emplace_back(i, j);
+  std::vector<double> distance(pairs.size(), 0.);
+  parallel_range(0, pairs.size(), threads, [&](std::size_t p) {
+    const std::size_t i = pairs[p].first, j = pairs[p].second;
+    distance[p] = rand_distance(labellings[i], counts[i], labellings[j], counts[j], area);
+  });
+  std::vector<double> sum(m, 0.);
+  for(std::size_t p = 0; p < pairs.size(); ++p)
+  {
+    sum[pairs[p].first] += distance[p];
+    sum[pairs[p].second] += distance[p];
+  }
   std::size_t best = m;
   for(std::size_t i = 0; i < m; ++i)
     if((eligible.empty() || eligible[i]) && (best == m || sum[i] < sum[best]))
@@ -230,7 +239,7 @@ std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& grap
     for(std::size_t i = 1; i < members.size(); ++i) // the first has the most clusters
       eligible[i] = sizes[i - 1] >= parts;
   const std::size_t kept =
-    members.size() > 1 ? medoid_labelling(answers, counts, graph.graph().geometry().areas, eligible) : 0;
+    members.size() > 1 ? medoid_labelling(answers, counts, graph.graph().geometry().areas, eligible, exec.threads()) : 0;
   r.labels = std::move(answers[kept]);
   r.clusters = std::move(members[kept]);
   keep_merges(graph, std::move(histories[kept]), r, nullptr);
