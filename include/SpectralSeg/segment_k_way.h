@@ -21,6 +21,7 @@
 #include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/Stage_timer.h>
 #include <SpectralSeg/internal/merge_by_contrast.h>
+#include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
 #include <algorithm>
@@ -74,9 +75,10 @@ void kmeans_clusters(std::size_t k, const Basic_K_way_options<AffinityKernel>& o
 }
 
 // The mean embedding coordinates of each of the `m` segments of `labels`
-// (one row per segment), the proxies of the graph cut after a merge.
+// (one row per segment), the proxies of the graph cut after a merge; the
+// columns on `threads` threads.
 SPECTRALSEG_INLINE Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinates, const std::vector<int>& labels,
-                                                std::size_t m)
+                                                std::size_t m, unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   Eigen::MatrixXd proxies = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), coordinates.cols());
@@ -85,13 +87,12 @@ SPECTRALSEG_INLINE Eigen::MatrixXd mean_proxies(const Eigen::MatrixXd& coordinat
     count[std::size_t(l)] += 1.;
   // column after column, as the coordinates are stored; each sum in face
   // order: thread-independent
-  for(Eigen::Index j = 0; j < coordinates.cols(); ++j)
-  {
-    const double* x = coordinates.col(j).data();
-    double* sum = proxies.col(j).data();
+  parallel_range(0, std::size_t(coordinates.cols()), threads, [&](std::size_t j) {
+    const double* x = coordinates.col(Eigen::Index(j)).data();
+    double* sum = proxies.col(Eigen::Index(j)).data();
     for(std::size_t f = 0; f < labels.size(); ++f)
       sum[labels[f]] += x[f];
-  }
+  });
   for(std::size_t c = 0; c < m; ++c)
     proxies.row(static_cast<Eigen::Index>(c)) /= std::max(1., count[c]);
   return proxies;
@@ -124,7 +125,7 @@ Pending_cut prepare_graph_cut_merged(const Weighted_dual_graph& graph, std::size
   {
     p.run = true;
     p.problem = Refinement::internal::graph_cut_problem(graph.graph(), r.embedding.coordinates,
-                                                        mean_proxies(r.embedding.coordinates, r.labels, m), r.labels,
+                                                        mean_proxies(r.embedding.coordinates, r.labels, m, threads), r.labels,
                                                         options.graph_cut, threads);
   }
   if(release)
@@ -231,7 +232,7 @@ Pending_cut prepare_refine_clusters(const Weighted_dual_graph& graph, std::size_
     const std::size_t m = merge_weakest_segments(graph, k_final, options, r, labels, keep);
     if(m <= k)
     {
-      proxies = mean_proxies(coordinates, labels, m);
+      proxies = mean_proxies(coordinates, labels, m, threads);
       r.labels = std::move(labels);
       p.merged = true;
     }
