@@ -124,9 +124,9 @@ Pending_cut prepare_graph_cut_merged(const Weighted_dual_graph& graph, std::size
   if(options.boundary_enhancement && m > 1 && m <= clusters)
   {
     p.run = true;
-    p.problem = Refinement::internal::graph_cut_problem(graph.graph(), r.embedding.coordinates,
-                                                        mean_proxies(r.embedding.coordinates, r.labels, m, threads), r.labels,
-                                                        options.graph_cut, threads);
+    p.problem = Refinement::internal::graph_cut_problem(
+      graph.graph(), r.embedding.coordinates, mean_proxies(r.embedding.coordinates, r.labels, m, threads), r.labels,
+      options.graph_cut, threads);
   }
   if(release)
     r.embedding.coordinates.resize(0, 0);

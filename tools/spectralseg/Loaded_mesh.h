@@ -34,9 +34,9 @@ struct Loaded_mesh
   // is built (the graph holds all the geometry the methods and the picture
   // use; only the mesh outputs need the mesh): on a large mesh it is a
   // twentieth of the peak memory of a segmentation. The reading's sorts run
-  // on `threads` threads (0: all); the heap memory the file will need is
-  // advised for huge pages and, with more than one thread, faulted in on two
-  // threads first (prepare_heap()).
+  // on `threads` threads (0: all); the heap memory the file will need gets
+  // its page size chosen and, with more than one thread, is faulted in on
+  // two threads first (prepare_heap()).
   Loaded_mesh(const std::string& path, const Progress_printer& out, bool keep_mesh = true, unsigned threads = 0)
   {
     prepare_heap_for_mesh_file(path, threads);

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 SpectralSeg developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
-// How the tool uses glibc's heap: freed memory kept, and pages faulted in
-// ahead on two cores, in huge pages, while a mesh is read.
+// How the tool uses glibc's heap: freed memory kept, the page size chosen by
+// timing both, and pages faulted in ahead on two cores while a mesh is read.
 #ifndef SPECTRALSEG_TOOLS_HEAP_TUNING_H
 #define SPECTRALSEG_TOOLS_HEAP_TUNING_H
 

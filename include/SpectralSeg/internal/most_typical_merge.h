@@ -239,7 +239,9 @@ std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& grap
     for(std::size_t i = 1; i < members.size(); ++i) // the first has the most clusters
       eligible[i] = sizes[i - 1] >= parts;
   const std::size_t kept =
-    members.size() > 1 ? medoid_labelling(answers, counts, graph.graph().geometry().areas, eligible, exec.threads()) : 0;
+    members.size() > 1
+      ? medoid_labelling(answers, counts, graph.graph().geometry().areas, eligible, exec.threads())
+      : 0;
   r.labels = std::move(answers[kept]);
   r.clusters = std::move(members[kept]);
   keep_merges(graph, std::move(histories[kept]), r, nullptr);
