@@ -1055,7 +1055,9 @@ TEST_CASE("the tool's heap preparation sizes, chooses the page size and leaves m
     char* first = block + (huge - reinterpret_cast<std::uintptr_t>(block) % huge) % huge;
     CHECK(mapping_flags(first).find(" hg") == std::string::npos);
     CHECK(mapping_flags(first).find(" nh") == std::string::npos);
-    const bool chosen = choose_page_size(block, 7 * huge);
+    const Page_size size = choose_page_size(block, 7 * huge);
+    REQUIRE(size != Page_size::none);
+    const bool chosen = size == Page_size::huge;
     CHECK(mapping_flags(first).find(" nh") != std::string::npos);
     CHECK(mapping_flags(first + huge).find(" hg") != std::string::npos);
     CHECK(mapping_flags(first + 2 * huge).find(" hg") != std::string::npos);
@@ -1066,7 +1068,12 @@ TEST_CASE("the tool's heap preparation sizes, chooses the page size and leaves m
     // too small to time both: nothing changed
     void* small = std::malloc(4 * huge);
     REQUIRE(small != nullptr);
-    CHECK(!choose_page_size(static_cast<char*>(small), 4 * huge - 1));
+    CHECK(choose_page_size(static_cast<char*>(small), 4 * huge - 1) == Page_size::none);
+    // as chosen, without timing
+    advise_page_size(block, 7 * huge, Page_size::small);
+    CHECK(mapping_flags(first + huge).find(" nh") != std::string::npos);
+    advise_page_size(block, 7 * huge, Page_size::huge);
+    CHECK(mapping_flags(first).find(" hg") != std::string::npos);
     std::free(small);
     std::free(raw);
   }

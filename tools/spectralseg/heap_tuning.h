@@ -61,10 +61,9 @@ constexpr std::size_t max_prefault_bytes = std::size_t(768) << 20;
 // block + bytes) by timing both there: the first 2 MB in 4 KB pages (512
 // page faults), the next two in huge pages (one fault each); the rest then
 // in huge pages when the faster of the two took less time than the 512
-// small pages, else in 4 KB pages. Returns whether huge pages were chosen;
-// false, with nothing changed, where fewer than four whole huge pages lie
-// inside or the kernel has no transparent huge pages. Only timing depends
-// on it.
+// small pages, else in 4 KB pages. Returns the choice; none, with nothing
+// changed, where fewer than four whole huge pages lie inside or the kernel
+// has no transparent huge pages. Only timing depends on it.
 //
 // Which is cheaper depends on the machine, and on a virtual machine on its
 // host's state (doc/benchmarks.md): on bare metal a 4 KB fault costs about
@@ -72,7 +71,14 @@ constexpr std::size_t max_prefault_bytes = std::size_t(768) << 20;
 // machine a 4 KB fault has cost 2 to 12 us, and a huge page 0.1 ms where
 // the host had backed the memory before and up to 20 ms where it backed it
 // 4 KB after 4 KB.
-inline bool choose_page_size(char* block, std::size_t bytes)
+enum class Page_size
+{
+  none,
+  small, // 4 KB
+  huge   // 2 MB
+};
+
+inline Page_size choose_page_size(char* block, std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
@@ -80,11 +86,11 @@ inline bool choose_page_size(char* block, std::size_t bytes)
   const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(block) + huge - 1) / huge * huge;
   const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(block) + bytes) / huge * huge;
   if(last < first + 4 * huge)
-    return false;
+    return Page_size::none;
   char* const start = reinterpret_cast<char*>(first);
   const std::size_t length = std::size_t(last - first);
   if(madvise(start, huge, MADV_NOHUGEPAGE) != 0 || madvise(start + huge, length - huge, MADV_HUGEPAGE) != 0)
-    return false;
+    return Page_size::none;
   typedef std::chrono::steady_clock Clock;
   const auto touch = [&](std::size_t from, std::size_t to) {
     const Clock::time_point begin = Clock::now();
@@ -95,13 +101,31 @@ inline bool choose_page_size(char* block, std::size_t bytes)
   const Clock::duration small = touch(0, huge);
   const Clock::duration large = std::min(touch(huge, huge + page), touch(2 * huge, 2 * huge + page));
   if(large < small)
-    return true;
+    return Page_size::huge;
   madvise(start + 3 * huge, length - 3 * huge, MADV_NOHUGEPAGE);
-  return false;
+  return Page_size::small;
 #else
   (void)block;
   (void)bytes;
-  return false;
+  return Page_size::none;
+#endif
+}
+
+// Advises the whole huge pages inside [block, block + bytes) for the page
+// size `size` that choose_page_size() chose (none: nothing).
+inline void advise_page_size(char* block, std::size_t bytes, Page_size size)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
+  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(block) + huge - 1) / huge * huge;
+  const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(block) + bytes) / huge * huge;
+  if(last > first && size != Page_size::none)
+    madvise(reinterpret_cast<void*>(first), std::size_t(last - first),
+            size == Page_size::huge ? MADV_HUGEPAGE : MADV_NOHUGEPAGE);
+#else
+  (void)block;
+  (void)bytes;
+  (void)size;
 #endif
 }
 
@@ -124,7 +148,8 @@ struct Heap_preparation
 };
 
 // Chooses the page size of the first `plan.page_choice_bytes` bytes of fresh
-// heap memory (choose_page_size()) and faults in the first
+// heap memory (choose_page_size() the first time in a process, the same
+// choice after) and faults in the first
 // `plan.prefault_bytes` of them on two threads (each at most
 // max_prefault_bytes), then frees them. With
 // keep_freed_memory_in_heap(), the freed block joins the free memory at
@@ -178,7 +203,16 @@ inline void prepare_heap(const Heap_preparation& plan)
   }
   char* block = static_cast<char*>(std::malloc(bytes));
   if(block != nullptr && plan.page_choice_bytes > 0)
-    choose_page_size(block, std::min(bytes, plan.page_choice_bytes));
+  {
+    // chosen once per process: a later block (the next mesh of a batch) may
+    // lie in memory already mapped, where timing tells nothing
+    static std::atomic<Page_size> chosen(Page_size::none);
+    const std::size_t length = std::min(bytes, plan.page_choice_bytes);
+    if(chosen.load() == Page_size::none)
+      chosen = choose_page_size(block, length);
+    else
+      advise_page_size(block, length, chosen.load());
+  }
   shared = block;
   given = true;
   if(other.joinable())
