@@ -1070,9 +1070,10 @@ TEST_CASE("the tool's heap preparation sizes, chooses the page size and leaves m
     REQUIRE(small != nullptr);
     CHECK(choose_page_size(static_cast<char*>(small), 4 * huge - 1) == Page_size::none);
     // as chosen, without timing
-    advise_page_size(block, 7 * huge, Page_size::small);
+    CHECK(advise_page_size(block, 7 * huge, Page_size::small));
     CHECK(mapping_flags(first + huge).find(" nh") != std::string::npos);
-    advise_page_size(block, 7 * huge, Page_size::huge);
+    CHECK(advise_page_size(block, 7 * huge, Page_size::huge));
+    CHECK(!advise_page_size(block, 7 * huge, Page_size::none));
     CHECK(mapping_flags(first).find(" hg") != std::string::npos);
     std::free(small);
     std::free(raw);

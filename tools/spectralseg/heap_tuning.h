@@ -16,6 +16,7 @@
 #include <string>
 #include <system_error>
 #include <thread>
+#include <utility>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -57,11 +58,48 @@ inline void keep_freed_memory_in_heap()
 // stays in it once freed.
 constexpr std::size_t max_prefault_bytes = std::size_t(768) << 20;
 
-// Chooses the page size of the whole huge pages (2 MB) inside [block,
-// block + bytes) by timing both there: the first 2 MB in 4 KB pages (512
-// page faults), the next two in huge pages (one fault each); the rest then
-// in huge pages when the faster of the two took less time than the 512
-// small pages, else in 4 KB pages. Returns the choice; none, with nothing
+// The page size of a stretch of the heap.
+enum class Page_size
+{
+  none, // not chosen: the kernel's policy
+  small, // 4 KB
+  huge   // 2 MB
+};
+
+// The size of a huge page (x86-64), the unit of madvise() below.
+constexpr std::size_t huge_page_bytes = std::size_t(2) << 20;
+
+// The whole huge pages inside [block, block + bytes): their first byte and
+// their length (0 when there is none).
+inline std::pair<char*, std::size_t> whole_huge_pages(char* block, std::size_t bytes)
+{
+  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(block);
+  const std::uintptr_t first = (begin + huge_page_bytes - 1) / huge_page_bytes * huge_page_bytes;
+  const std::uintptr_t last = (begin + bytes) / huge_page_bytes * huge_page_bytes;
+  return {reinterpret_cast<char*>(first), last > first ? std::size_t(last - first) : 0};
+}
+
+// Advises the whole huge pages inside [block, block + bytes) for the page
+// size `size` (none: nothing); whether the kernel took the advice.
+inline bool advise_page_size(char* block, std::size_t bytes, Page_size size)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const std::pair<char*, std::size_t> pages = whole_huge_pages(block, bytes);
+  return size != Page_size::none && pages.second > 0 &&
+         madvise(pages.first, pages.second, size == Page_size::huge ? MADV_HUGEPAGE : MADV_NOHUGEPAGE) == 0;
+#else
+  (void)block;
+  (void)bytes;
+  (void)size;
+  return false;
+#endif
+}
+
+// Chooses the page size of the whole huge pages inside [block, block +
+// bytes) by timing both there: the first 2 MB in 4 KB pages (512 page
+// faults), the next two in huge pages (one fault each); the rest then in
+// huge pages when the faster of the two took less time than the 512 small
+// pages, else in 4 KB pages. Returns the choice; none, with nothing
 // changed, where fewer than four whole huge pages lie inside or the kernel
 // has no transparent huge pages. Only timing depends on it.
 //
@@ -71,25 +109,13 @@ constexpr std::size_t max_prefault_bytes = std::size_t(768) << 20;
 // machine a 4 KB fault has cost 2 to 12 us, and a huge page 0.1 ms where
 // the host had backed the memory before and up to 20 ms where it backed it
 // 4 KB after 4 KB.
-enum class Page_size
-{
-  none,
-  small, // 4 KB
-  huge   // 2 MB
-};
-
 inline Page_size choose_page_size(char* block, std::size_t bytes)
 {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
-  constexpr std::size_t page = 4096;
-  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(block) + huge - 1) / huge * huge;
-  const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(block) + bytes) / huge * huge;
-  if(last < first + 4 * huge)
-    return Page_size::none;
-  char* const start = reinterpret_cast<char*>(first);
-  const std::size_t length = std::size_t(last - first);
-  if(madvise(start, huge, MADV_NOHUGEPAGE) != 0 || madvise(start + huge, length - huge, MADV_HUGEPAGE) != 0)
+  constexpr std::size_t huge = huge_page_bytes, page = 4096;
+  const std::pair<char*, std::size_t> pages = whole_huge_pages(block, bytes);
+  char* const start = pages.first;
+  if(pages.second < 4 * huge || !advise_page_size(start, huge, Page_size::small) ||
+     !advise_page_size(start + huge, pages.second - huge, Page_size::huge))
     return Page_size::none;
   typedef std::chrono::steady_clock Clock;
   const auto touch = [&](std::size_t from, std::size_t to) {
@@ -102,31 +128,8 @@ inline Page_size choose_page_size(char* block, std::size_t bytes)
   const Clock::duration large = std::min(touch(huge, huge + page), touch(2 * huge, 2 * huge + page));
   if(large < small)
     return Page_size::huge;
-  madvise(start + 3 * huge, length - 3 * huge, MADV_NOHUGEPAGE);
+  advise_page_size(start + 3 * huge, pages.second - 3 * huge, Page_size::small);
   return Page_size::small;
-#else
-  (void)block;
-  (void)bytes;
-  return Page_size::none;
-#endif
-}
-
-// Advises the whole huge pages inside [block, block + bytes) for the page
-// size `size` that choose_page_size() chose (none: nothing).
-inline void advise_page_size(char* block, std::size_t bytes, Page_size size)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t huge = std::uintptr_t(2) << 20;
-  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(block) + huge - 1) / huge * huge;
-  const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(block) + bytes) / huge * huge;
-  if(last > first && size != Page_size::none)
-    madvise(reinterpret_cast<void*>(first), std::size_t(last - first),
-            size == Page_size::huge ? MADV_HUGEPAGE : MADV_NOHUGEPAGE);
-#else
-  (void)block;
-  (void)bytes;
-  (void)size;
-#endif
 }
 
 // Whether the environment variable GLIBC_TUNABLES (`tunables`, may be null)
