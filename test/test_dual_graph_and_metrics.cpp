@@ -412,6 +412,69 @@ TEST_CASE("adding a source lowers the nearest-source distances as a run from all
   CHECK_THROWS_AS(wg.add_source(0, 0, short_distance, nearest), Invalid_input);
 }
 
+TEST_CASE("shortest paths by buckets give Dijkstra's distances bit for bit, whatever the bucket width", "[distances]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::sphere(1., 24, 48));
+  const Dual_graph g = make_dual_graph(m);
+  const Dual_graph::Csr& csr = g.csr();
+  const std::size_t n = g.number_of_faces();
+  // uneven weights, some 0 and one far above the others
+  std::vector<double> arc(num_edges(csr));
+  for(auto e : boost::make_iterator_range(boost::edges(csr)))
+  {
+    const std::size_t d = csr[e].dual_edge;
+    arc[get(boost::edge_index, csr, e)] = d % 11 == 0 ? 0. : d == 5 ? 1e6 : 0.1 + 0.37 * double((d * 7919) % 97);
+  }
+  double mean = 0.;
+  for(double w : arc)
+    mean += w / double(arc.size());
+  for(const Dual_graph::size_type source : {Dual_graph::size_type(0), Dual_graph::size_type(n / 2)})
+  {
+    std::vector<double> dijkstra(n);
+    boost::dijkstra_shortest_paths(
+      csr, source,
+      boost::distance_map(boost::make_iterator_property_map(dijkstra.begin(), get(boost::vertex_index, csr)))
+        .weight_map(boost::make_iterator_property_map(arc.begin(), get(boost::edge_index, csr))));
+    // buckets; all in one bucket; a width so small that the run goes on in a heap
+    for(const double width : {mean, 1e9 * mean, 1e-9 * mean})
+    {
+      INFO("source " << source << ", width " << width);
+      std::vector<double> d(n, std::numeric_limits<double>::infinity());
+      d[source] = 0.;
+      std::vector<char> lowered(n, 0);
+      internal::bucket_shortest_paths(csr, arc, width, d, {std::make_pair(0., source)},
+                                      [&](Dual_graph::size_type f) { lowered[f] = 1; });
+      CHECK(d == dijkstra);
+      // every face but the source was lowered from infinity, and only once reported per lowering
+      CHECK(std::count(lowered.begin(), lowered.end(), 1) == std::ptrdiff_t(n - 1));
+      // lowering from a second source reports exactly the faces that get closer
+      const Dual_graph::size_type other = Dual_graph::size_type(n - 1 - source / 3);
+      std::vector<double> second(n);
+      boost::dijkstra_shortest_paths(
+        csr, other,
+        boost::distance_map(boost::make_iterator_property_map(second.begin(), get(boost::vertex_index, csr)))
+          .weight_map(boost::make_iterator_property_map(arc.begin(), get(boost::edge_index, csr))));
+      const std::vector<double> before = d;
+      std::fill(lowered.begin(), lowered.end(), 0);
+      d[other] = 0.;
+      internal::bucket_shortest_paths(csr, arc, width, d, {std::make_pair(0., other)},
+                                      [&](Dual_graph::size_type f) { lowered[f] = 1; });
+      std::size_t closer = 0;
+      for(std::size_t f = 0; f < n; ++f)
+      {
+        CHECK(d[f] == std::min(before[f], second[f]));
+        if(f != other)
+        {
+          CHECK(bool(lowered[f]) == (d[f] < before[f]));
+          closer += d[f] < before[f];
+        }
+      }
+      CHECK(closer > 0);
+      CHECK(closer < n - 1);
+    }
+  }
+}
+
 TEST_CASE("quantile normalisation divides by the quantile and clamps at 1", "[metrics][normalization]")
 {
   std::vector<double> w = {0., 1., 2., 3., 100.};

@@ -8,19 +8,19 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/Metrics/normalize_weights.h>
+#include <SpectralSeg/internal/bucket_shortest_paths.h>
 #include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
 #include <boost/graph/dijkstra_shortest_paths.hpp>
-#include <boost/graph/dijkstra_shortest_paths_no_color_map.hpp>
 #include <boost/property_map/property_map.hpp>
 #include <boost/range/iterator_range.hpp>
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,7 +86,7 @@ public:
   }
 
   /// Row `i` of the result holds the distances from `sources[i]` to every
-  /// face. Rows are computed in parallel; each row is one Dijkstra run, so
+  /// face. Rows are computed in parallel, each by one shortest-path run, so
   /// the result does not depend on the number of threads.
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>
   distance_rows(const std::vector<size_type>& sources, const Execution& exec = Execution()) const;
@@ -104,8 +104,9 @@ public:
                   std::vector<std::size_t>& nearest) const;
 
 private:
-  // One Dijkstra run from `sources`; records the nearest source only when
-  // `nearest` is given (the single-source queries of distance_rows() skip it).
+  // One shortest-path run from `sources`; records the nearest source only
+  // when `nearest` is given (Dijkstra's order decides its ties), else runs
+  // by buckets (the same distances, faster).
   void run(const std::vector<size_type>& sources, std::vector<double>& distance,
            std::vector<std::size_t>* nearest) const;
 
@@ -123,6 +124,7 @@ private:
   const Dual_graph& graph_;
   std::vector<double> weights_;
   std::vector<double> arc_weights_;
+  double bucket_width_ = 1.; // of bucket_shortest_paths(): the mean weight
 };
 
 #if SPECTRALSEG_DEFINE_FUNCTIONS
@@ -151,29 +153,10 @@ SPECTRALSEG_INLINE void Weighted_dual_graph::add_source(size_type source, std::s
                         std::to_string(nearest.size()) + " nearest sources for " + std::to_string(n) + " faces");
   if(!(distance[source] > 0.))
     return;
-  typedef std::pair<double, size_type> Entry;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   distance[source] = 0.;
   nearest[source] = label;
-  queue.emplace(0., source);
-  while(!queue.empty())
-  {
-    const Entry top = queue.top();
-    queue.pop();
-    if(top.first > distance[top.second]) // lowered since it was queued
-      continue;
-    for(auto e : boost::make_iterator_range(boost::out_edges(top.second, g)))
-    {
-      const size_type v = boost::target(e, g);
-      const double d = top.first + arc_weights_[get(boost::edge_index, g, e)];
-      if(d < distance[v])
-      {
-        distance[v] = d;
-        nearest[v] = label;
-        queue.emplace(d, v);
-      }
-    }
-  }
+  internal::bucket_shortest_paths(g, arc_weights_, bucket_width_, distance, {std::make_pair(0., source)},
+                                  [&](size_type f) { nearest[f] = label; });
 }
 
 SPECTRALSEG_INLINE void Weighted_dual_graph::run(const std::vector<size_type>& sources, std::vector<double>& distance,
@@ -201,14 +184,16 @@ SPECTRALSEG_INLINE void Weighted_dual_graph::run(const std::vector<size_type>& s
                                    index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
                                    boost::make_dijkstra_visitor(Nearest_recorder{nearest}));
   }
-  else if(sources.size() == 1)
-    boost::dijkstra_shortest_paths_no_color_map(g, sources.front(), boost::dummy_property_map(), dmap, weight, index,
-                                                std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
-                                                boost::default_dijkstra_visitor());
   else
-    boost::dijkstra_shortest_paths(g, sources.begin(), sources.end(), boost::dummy_property_map(), dmap, weight,
-                                   index, std::less<double>(), boost::closed_plus<double>(inf), inf, 0.,
-                                   boost::default_dijkstra_visitor());
+  {
+    std::vector<std::pair<double, size_type>> queued;
+    for(size_type s : sources)
+    {
+      distance[s] = 0.;
+      queued.emplace_back(0., s);
+    }
+    internal::bucket_shortest_paths(g, arc_weights_, bucket_width_, distance, std::move(queued), [](size_type) {});
+  }
 }
 
 SPECTRALSEG_INLINE Weighted_dual_graph::Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights)
@@ -218,6 +203,11 @@ SPECTRALSEG_INLINE Weighted_dual_graph::Weighted_dual_graph(const Dual_graph& gr
   const Dual_graph::Csr& g = graph.csr();
   for(auto e : boost::make_iterator_range(boost::edges(g)))
     arc_weights_[get(boost::edge_index, g, e)] = weights[g[e].dual_edge];
+  double sum = 0.;
+  for(double w : weights)
+    sum += w;
+  if(sum > 0. && std::isfinite(sum))
+    bucket_width_ = sum / double(weights.size());
 }
 #endif
 

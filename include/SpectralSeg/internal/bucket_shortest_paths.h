@@ -1,0 +1,140 @@
+// Copyright (c) 2026 SpectralSeg developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef SPECTRALSEG_INTERNAL_BUCKET_SHORTEST_PATHS_H
+#define SPECTRALSEG_INTERNAL_BUCKET_SHORTEST_PATHS_H
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/graph/properties.hpp>
+#include <boost/range/iterator_range.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace SpectralSeg {
+namespace internal {
+
+// Lowers `distance` to the shortest-path distances over the arcs of `g`
+// (weights `arc_weight`, by arc index, finite and non-negative) from the
+// vertices of `queued`, each with the distance it now has in `distance`;
+// calls `lowered(v)` whenever `distance[v]` goes down.
+//
+// The vertices wait in buckets of distance `width` (Meyer and Sanders's
+// delta-stepping, on one thread): a bucket's vertices are relaxed in turn,
+// again whenever one of them gets closer, and the next bucket starts when
+// this one is empty. On the dual graph of a mesh this does a third of the
+// work of Dijkstra's heap (doc/benchmarks.md, session 68).
+//
+// The distances are those of Dijkstra's algorithm bit for bit, in any order
+// of relaxation: each is the least, over the paths from a source, of the
+// path's weights added one arc at a time in floating point (rounding is
+// monotonic, so Dijkstra's algorithm finds that least value), and a vertex
+// keeps being lowered here until no arc can lower it, which only that
+// value allows. `lowered(v)` is therefore called at least once for exactly
+// the vertices whose distance ends lower than it started.
+//
+// A vertex past the last of the 1024 buckets kept at a time (an arc over a
+// thousand times `width`), or relaxations past four per vertex, send the
+// waiting vertices to a heap, and the run ends as Dijkstra's: the same
+// distances, and never much more work than Dijkstra's.
+template <typename Graph, typename Lowered>
+void bucket_shortest_paths(const Graph& g, const std::vector<double>& arc_weight, double width,
+                           std::vector<double>& distance,
+                           std::vector<std::pair<double, typename boost::graph_traits<Graph>::vertex_descriptor>> queued,
+                           const Lowered& lowered)
+{
+  typedef typename boost::graph_traits<Graph>::vertex_descriptor Vertex;
+  typedef std::pair<double, Vertex> Entry;
+  constexpr std::size_t ring = 1024;
+  if(queued.empty())
+    return;
+  const double inverse = width > 0. && std::isfinite(1. / width) ? 1. / width : 1.;
+  std::vector<std::vector<Entry>> bucket(ring);
+  std::vector<Entry> work, heap; // heap: after the switch, ordered by std::greater
+  const std::greater<Entry> later;
+  std::size_t pending = 0, budget = 4 * distance.size() + ring;
+  double current = std::floor(queued.front().first * inverse);
+  for(const Entry& e : queued)
+    current = std::min(current, std::floor(e.first * inverse));
+  bool buckets = true;
+  const auto to_heap = [&] {
+    buckets = false;
+    for(std::vector<Entry>& b : bucket)
+      heap.insert(heap.end(), b.begin(), b.end());
+    std::make_heap(heap.begin(), heap.end(), later);
+  };
+  const auto push = [&](double d, Vertex v) {
+    if(buckets)
+    {
+      const double b = std::floor(d * inverse) - current; // >= 0: no distance lower than the bucket's
+      if(b < double(ring))
+      {
+        bucket[(std::size_t(current) + std::size_t(b)) % ring].emplace_back(d, v);
+        ++pending;
+        return;
+      }
+      to_heap();
+    }
+    heap.emplace_back(d, v);
+    std::push_heap(heap.begin(), heap.end(), later);
+  };
+  const auto relax = [&](double du, Vertex u) {
+    for(auto e : boost::make_iterator_range(out_edges(u, g)))
+    {
+      const Vertex v = target(e, g);
+      const double d = du + arc_weight[get(boost::edge_index, g, e)];
+      if(d < distance[v])
+      {
+        distance[v] = d;
+        lowered(v);
+        push(d, v);
+      }
+    }
+  };
+  if(!std::isfinite(current) || current >= 1e15) // beyond exact bucket numbers
+    to_heap();
+  for(const Entry& e : queued)
+    push(e.first, e.second);
+  while(buckets && pending > 0)
+  {
+    std::vector<Entry>& b = bucket[std::size_t(current) % ring];
+    while(buckets && !b.empty())
+    {
+      work.swap(b);
+      pending -= work.size();
+      for(std::size_t i = 0; i < work.size(); ++i)
+      {
+        if(!buckets || budget == 0)
+        {
+          if(buckets)
+            to_heap();
+          for(; i < work.size(); ++i)
+            push(work[i].first, work[i].second);
+          break;
+        }
+        if(work[i].first != distance[work[i].second]) // lowered since it was queued
+          continue;
+        --budget;
+        relax(work[i].first, work[i].second);
+      }
+      work.clear();
+    }
+    current += 1.;
+  }
+  while(!heap.empty())
+  {
+    std::pop_heap(heap.begin(), heap.end(), later);
+    const Entry top = heap.back();
+    heap.pop_back();
+    if(top.first == distance[top.second])
+      relax(top.first, top.second);
+  }
+}
+
+} // namespace internal
+} // namespace SpectralSeg
+
+#endif // SPECTRALSEG_INTERNAL_BUCKET_SHORTEST_PATHS_H
