@@ -110,6 +110,16 @@ private:
   void run(const std::vector<size_type>& sources, std::vector<double>& distance,
            std::vector<std::size_t>* nearest) const;
 
+  // the arcs of a face, for bucket_shortest_paths()
+  auto arcs() const
+  {
+    return [this](size_type f, const auto& fn) {
+      const Dual_graph::Csr& g = graph_.csr();
+      for(auto e : boost::make_iterator_range(out_edges(f, g)))
+        fn(size_type(target(e, g)), arc_weights_[get(boost::edge_index, g, e)]);
+    };
+  }
+
   struct Nearest_recorder
   {
     typedef boost::on_edge_relaxed event_filter;
@@ -143,7 +153,6 @@ Weighted_dual_graph::distance_rows(const std::vector<size_type>& sources, const 
 SPECTRALSEG_INLINE void Weighted_dual_graph::add_source(size_type source, std::size_t label, std::vector<double>& distance,
                                                         std::vector<std::size_t>& nearest) const
 {
-  const Dual_graph::Csr& g = graph_.csr();
   const std::size_t n = graph_.number_of_faces();
   if(source >= n)
     throw Invalid_input("add_source: source face " + std::to_string(source) + " is out of range (the mesh has " +
@@ -155,8 +164,11 @@ SPECTRALSEG_INLINE void Weighted_dual_graph::add_source(size_type source, std::s
     return;
   distance[source] = 0.;
   nearest[source] = label;
-  internal::bucket_shortest_paths(g, arc_weights_, bucket_width_, distance, {std::make_pair(0., source)},
-                                  [&](size_type f) { nearest[f] = label; });
+  internal::bucket_shortest_paths<size_type>(arcs(), bucket_width_, distance, {std::make_pair(0., source)},
+                                             [&](size_type f, double) {
+                                               nearest[f] = label;
+                                               return true;
+                                             });
 }
 
 SPECTRALSEG_INLINE void Weighted_dual_graph::run(const std::vector<size_type>& sources, std::vector<double>& distance,
@@ -192,7 +204,8 @@ SPECTRALSEG_INLINE void Weighted_dual_graph::run(const std::vector<size_type>& s
       distance[s] = 0.;
       queued.emplace_back(0., s);
     }
-    internal::bucket_shortest_paths(g, arc_weights_, bucket_width_, distance, std::move(queued), [](size_type) {});
+    internal::bucket_shortest_paths(arcs(), bucket_width_, distance, std::move(queued),
+                                    [](size_type, double) { return true; });
   }
 }
 

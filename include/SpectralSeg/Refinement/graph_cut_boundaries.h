@@ -10,6 +10,7 @@
 #include <SpectralSeg/Metrics/Angular_weight.h>
 #include <SpectralSeg/Refinement/internal/alpha_expansion.h>
 #include <SpectralSeg/exceptions.h>
+#include <SpectralSeg/internal/bucket_shortest_paths.h>
 #include <SpectralSeg/internal/parallel_for.h>
 
 // The max-flow implementations: Kolmogorov's MaxFlow (the default) here;
@@ -26,7 +27,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -154,36 +154,43 @@ SPECTRALSEG_INLINE std::vector<double> segment_areas(const Dual_graph& graph, co
 ;
 #endif
 
-typedef std::pair<double, Dual_graph::size_type> Distance_item;
-typedef std::priority_queue<Distance_item, std::vector<Distance_item>, std::greater<Distance_item>> Distance_queue;
-
-// Dijkstra over the dual graph (geodesic edge lengths) from the faces in
-// `queue`, whose `distance` is set: a face is reached only from a face of
-// its own segment and only when `admit(face, new_distance)` says so (admit
-// is called before the distance is lowered); `settle(face, distance)` is
-// called once per face, at its final distance.
-template <typename Admit, typename Settle>
-void dijkstra_within_segments(const Dual_graph& graph, const std::vector<int>& labels, std::vector<double>& distance,
-                              Distance_queue& queue, const Admit& admit, const Settle& settle)
+// The shortest distances over the dual graph (geodesic edge lengths) from
+// the faces of `sources`, whose `distance` is set to 0: a face is reached
+// only from a face of its own segment and only when `admit(face,
+// new_distance)` says so (admit is asked before the distance is lowered,
+// maybe several times per face). By buckets of the mean edge length
+// (internal::bucket_shortest_paths()): Dijkstra's distances.
+template <typename Admit>
+void distances_within_segments(const Dual_graph& graph, const std::vector<int>& labels,
+                               std::vector<double>& distance, const std::vector<Dual_graph::size_type>& sources,
+                               double mean_length, const Admit& admit)
 {
-  while(!queue.empty())
-  {
-    const Distance_item top = queue.top();
-    queue.pop();
-    const Dual_graph::size_type f = top.second;
-    if(top.first > distance[f])
-      continue;
-    settle(f, top.first);
-    graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type e) {
-      const double d = top.first + graph.edge(e).geodesic_length;
-      if(labels[g] == labels[f] && d < distance[g] && admit(g, d))
-      {
-        distance[g] = d;
-        queue.emplace(d, g);
-      }
-    });
-  }
+  std::vector<std::pair<double, Dual_graph::size_type>> queued;
+  queued.reserve(sources.size());
+  for(const Dual_graph::size_type f : sources)
+    queued.emplace_back(0., f);
+  SpectralSeg::internal::bucket_shortest_paths<Dual_graph::size_type>(
+    [&](Dual_graph::size_type f, const auto& fn) {
+      graph.for_each_neighbour(f, [&](Dual_graph::size_type g, Dual_graph::size_type e) {
+        if(labels[g] == labels[f])
+          fn(g, graph.edge(e).geodesic_length);
+      });
+    },
+    mean_length, distance, std::move(queued), admit);
 }
+
+// The mean geodesic length of the dual graph's edges (1 without edges).
+SPECTRALSEG_INLINE double mean_geodesic_length(const Dual_graph& graph)
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+{
+  double sum = 0.;
+  for(const Dual_graph::Edge& e : graph.edges())
+    sum += e.geodesic_length;
+  return sum > 0. && std::isfinite(sum) ? sum / double(graph.edges().size()) : 1.;
+}
+#else
+;
+#endif
 
 // The faces of each segment, in face order: the faces of label l are
 // face[first[l]] .. face[first[l + 1] - 1].
@@ -219,8 +226,9 @@ SPECTRALSEG_INLINE std::vector<char> boundary_band(const Dual_graph& graph, cons
   const Segment_faces segments(labels, area.size());
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
   std::vector<char> out(n, 0);
+  const double mean_length = mean_geodesic_length(graph);
   SpectralSeg::internal::parallel_range(0, area.size(), threads, [&](std::size_t l) {
-    Distance_queue queue;
+    std::vector<Dual_graph::size_type> sources;
     for(std::size_t i = segments.first[l]; i < segments.first[l + 1]; ++i)
     {
       const Dual_graph::size_type f = segments.face[i];
@@ -231,13 +239,15 @@ SPECTRALSEG_INLINE std::vector<char> boundary_band(const Dual_graph& graph, cons
       if(boundary)
       {
         distance[f] = 0.;
-        queue.emplace(0., f);
+        sources.push_back(f);
       }
     }
+    distances_within_segments(graph, labels, distance, sources, mean_length,
+                              [](Dual_graph::size_type, double) { return true; });
     double deepest = 0.;
-    dijkstra_within_segments(
-      graph, labels, distance, queue, [](Dual_graph::size_type, double) { return true; },
-      [&](Dual_graph::size_type, double d) { deepest = std::max(deepest, d); });
+    for(std::size_t i = segments.first[l]; i < segments.first[l + 1]; ++i)
+      if(distance[segments.face[i]] < std::numeric_limits<double>::infinity())
+        deepest = std::max(deepest, distance[segments.face[i]]);
     // the half of each segment nearest its boundary at most: every segment
     // keeps a core; strictly nearer than half the deepest face: a segment
     // whose faces all touch its boundary (a tiny mesh) stays as it is
@@ -278,6 +288,7 @@ SPECTRALSEG_INLINE Band_labels band_labels(const Dual_graph& graph, const std::v
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
   // (face, label it may take), per segment
   std::vector<std::vector<std::pair<Dual_graph::size_type, int>>> pairs(area.size());
+  const double mean_length = mean_geodesic_length(graph);
   SpectralSeg::internal::parallel_range(0, area.size(), threads, [&](std::size_t l) {
     // the segment's band faces on its boundary, as (label across, face)
     std::vector<std::pair<int, Dual_graph::size_type>> sources;
@@ -293,30 +304,32 @@ SPECTRALSEG_INLINE Band_labels band_labels(const Dual_graph& graph, const std::v
     std::sort(sources.begin(), sources.end());
     sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
     const double reach = width * std::sqrt(area[l]);
-    std::vector<Dual_graph::size_type> touched;
-    Distance_queue queue;
+    std::vector<Dual_graph::size_type> touched, from;
     for(std::size_t begin = 0; begin < sources.size();)
     {
       const int across = sources[begin].first;
       std::size_t end = begin;
+      from.clear();
       for(; end < sources.size() && sources[end].first == across; ++end)
       {
         distance[sources[end].second] = 0.;
         touched.push_back(sources[end].second);
-        queue.emplace(0., sources[end].second);
+        from.push_back(sources[end].second);
       }
-      dijkstra_within_segments(
-        graph, labels, distance, queue,
-        [&](Dual_graph::size_type g, double d) {
-          if(!in_band[g] || d > reach)
-            return false;
-          if(distance[g] == std::numeric_limits<double>::infinity())
-            touched.push_back(g);
-          return true;
-        },
-        [&](Dual_graph::size_type f, double) { pairs[l].emplace_back(f, across); });
+      distances_within_segments(graph, labels, distance, from, mean_length,
+                                [&](Dual_graph::size_type g, double d) {
+                                  if(!in_band[g] || d > reach)
+                                    return false;
+                                  if(distance[g] == std::numeric_limits<double>::infinity())
+                                    touched.push_back(g);
+                                  return true;
+                                });
+      // every face reached lies within the reach: it may take `across`
       for(Dual_graph::size_type f : touched)
+      {
+        pairs[l].emplace_back(f, across);
         distance[f] = std::numeric_limits<double>::infinity();
+      }
       touched.clear();
       begin = end;
     }

@@ -3,10 +3,6 @@
 #ifndef SPECTRALSEG_INTERNAL_BUCKET_SHORTEST_PATHS_H
 #define SPECTRALSEG_INTERNAL_BUCKET_SHORTEST_PATHS_H
 
-#include <boost/graph/graph_traits.hpp>
-#include <boost/graph/properties.hpp>
-#include <boost/range/iterator_range.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -17,10 +13,13 @@
 namespace SpectralSeg {
 namespace internal {
 
-// Lowers `distance` to the shortest-path distances over the arcs of `g`
-// (weights `arc_weight`, by arc index, finite and non-negative) from the
-// vertices of `queued`, each with the distance it now has in `distance`;
-// calls `lowered(v)` whenever `distance[v]` goes down.
+// Lowers `distance` to the shortest-path distances from the vertices of
+// `queued` (each with the distance it now has in `distance`) over the arcs
+// that `arcs(u, fn)` lists by calling `fn(v, w)` for each arc u -> v of
+// weight w (finite, non-negative). Where an arc would lower `distance[v]`
+// to d, `lower(v, d)` is asked first: it returns whether v may take d (and
+// may note it); v is only reached through the arcs and the values it
+// accepts.
 //
 // The vertices wait in buckets of distance `width` (Meyer and Sanders's
 // delta-stepping, on one thread): a bucket's vertices are relaxed in turn,
@@ -33,20 +32,19 @@ namespace internal {
 // path's weights added one arc at a time in floating point (rounding is
 // monotonic, so Dijkstra's algorithm finds that least value), and a vertex
 // keeps being lowered here until no arc can lower it, which only that
-// value allows. `lowered(v)` is therefore called at least once for exactly
-// the vertices whose distance ends lower than it started.
+// value allows. `lower(v, d)` may therefore be asked more often than in
+// Dijkstra's run, but a vertex ends lower than it started exactly when
+// Dijkstra's run would lower it (with a `lower` that only depends on v and
+// on whether d is within a bound).
 //
 // A vertex past the last of the 1024 buckets kept at a time (an arc over a
-// thousand times `width`), or relaxations past four per vertex, send the
-// waiting vertices to a heap, and the run ends as Dijkstra's: the same
-// distances, and never much more work than Dijkstra's.
-template <typename Graph, typename Lowered>
-void bucket_shortest_paths(const Graph& g, const std::vector<double>& arc_weight, double width,
-                           std::vector<double>& distance,
-                           std::vector<std::pair<double, typename boost::graph_traits<Graph>::vertex_descriptor>> queued,
-                           const Lowered& lowered)
+// thousand times `width`), or relaxations past four per vertex of
+// `distance`, send the waiting vertices to a heap, and the run ends as
+// Dijkstra's: the same distances, and never much more work than Dijkstra's.
+template <typename Vertex, typename Arcs, typename Lower>
+void bucket_shortest_paths(const Arcs& arcs, double width, std::vector<double>& distance,
+                           std::vector<std::pair<double, Vertex>> queued, const Lower& lower)
 {
-  typedef typename boost::graph_traits<Graph>::vertex_descriptor Vertex;
   typedef std::pair<double, Vertex> Entry;
   constexpr std::size_t ring = 1024;
   if(queued.empty())
@@ -82,17 +80,14 @@ void bucket_shortest_paths(const Graph& g, const std::vector<double>& arc_weight
     std::push_heap(heap.begin(), heap.end(), later);
   };
   const auto relax = [&](double du, Vertex u) {
-    for(auto e : boost::make_iterator_range(out_edges(u, g)))
-    {
-      const Vertex v = target(e, g);
-      const double d = du + arc_weight[get(boost::edge_index, g, e)];
-      if(d < distance[v])
+    arcs(u, [&](Vertex v, double w) {
+      const double d = du + w;
+      if(d < distance[v] && lower(v, d))
       {
         distance[v] = d;
-        lowered(v);
         push(d, v);
       }
-    }
+    });
   };
   if(!std::isfinite(current) || current >= 1e15) // beyond exact bucket numbers
     to_heap();
