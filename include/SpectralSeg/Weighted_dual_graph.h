@@ -204,7 +204,7 @@ SPECTRALSEG_INLINE void Weighted_dual_graph::run(const std::vector<size_type>& s
       distance[s] = 0.;
       queued.emplace_back(0., s);
     }
-    internal::bucket_shortest_paths(arcs(), bucket_width_, distance, std::move(queued),
+    internal::bucket_shortest_paths(arcs(), bucket_width_, distance, queued,
                                     [](size_type, double) { return true; });
   }
 }

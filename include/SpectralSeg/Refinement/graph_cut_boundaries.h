@@ -159,11 +159,12 @@ SPECTRALSEG_INLINE std::vector<double> segment_areas(const Dual_graph& graph, co
 // only from a face of its own segment and only when `admit(face,
 // new_distance)` says so (admit is asked before the distance is lowered,
 // maybe several times per face). By buckets of the mean edge length
-// (internal::bucket_shortest_paths()): Dijkstra's distances.
+// (internal::bucket_shortest_paths(), in `room`): Dijkstra's distances.
 template <typename Admit>
 void distances_within_segments(const Dual_graph& graph, const std::vector<int>& labels,
                                std::vector<double>& distance, const std::vector<Dual_graph::size_type>& sources,
-                               double mean_length, const Admit& admit)
+                               double mean_length, const Admit& admit,
+                               SpectralSeg::internal::Shortest_path_buckets<Dual_graph::size_type>& room)
 {
   std::vector<std::pair<double, Dual_graph::size_type>> queued;
   queued.reserve(sources.size());
@@ -176,7 +177,7 @@ void distances_within_segments(const Dual_graph& graph, const std::vector<int>& 
           fn(g, graph.edge(e).geodesic_length);
       });
     },
-    mean_length, distance, std::move(queued), admit);
+    mean_length, distance, queued, admit, &room);
 }
 
 // The mean geodesic length of the dual graph's edges (1 without edges).
@@ -242,8 +243,9 @@ SPECTRALSEG_INLINE std::vector<char> boundary_band(const Dual_graph& graph, cons
         sources.push_back(f);
       }
     }
-    distances_within_segments(graph, labels, distance, sources, mean_length,
-                              [](Dual_graph::size_type, double) { return true; });
+    SpectralSeg::internal::Shortest_path_buckets<Dual_graph::size_type> room;
+    distances_within_segments(
+      graph, labels, distance, sources, mean_length, [](Dual_graph::size_type, double) { return true; }, room);
     double deepest = 0.;
     for(std::size_t i = segments.first[l]; i < segments.first[l + 1]; ++i)
       if(distance[segments.face[i]] < std::numeric_limits<double>::infinity())
@@ -305,6 +307,7 @@ SPECTRALSEG_INLINE Band_labels band_labels(const Dual_graph& graph, const std::v
     sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
     const double reach = width * std::sqrt(area[l]);
     std::vector<Dual_graph::size_type> touched, from;
+    SpectralSeg::internal::Shortest_path_buckets<Dual_graph::size_type> room;
     for(std::size_t begin = 0; begin < sources.size();)
     {
       const int across = sources[begin].first;
@@ -323,7 +326,8 @@ SPECTRALSEG_INLINE Band_labels band_labels(const Dual_graph& graph, const std::v
                                   if(distance[g] == std::numeric_limits<double>::infinity())
                                     touched.push_back(g);
                                   return true;
-                                });
+                                },
+                                room);
       // every face reached lies within the reach: it may take `across`
       for(Dual_graph::size_type f : touched)
       {

@@ -41,17 +41,32 @@ namespace internal {
 // thousand times `width`), or relaxations past four per vertex of
 // `distance`, send the waiting vertices to a heap, and the run ends as
 // Dijkstra's: the same distances, and never much more work than Dijkstra's.
+//
+// `room`, when given, keeps the buckets' memory from one run to the next
+// (empty between runs).
+template <typename Vertex>
+struct Shortest_path_buckets
+{
+  static constexpr std::size_t ring = 1024;
+  std::vector<std::vector<std::pair<double, Vertex>>> bucket = std::vector<std::vector<std::pair<double, Vertex>>>(ring);
+  std::vector<std::pair<double, Vertex>> work, heap; // heap: after a switch, ordered by std::greater
+};
+
 template <typename Vertex, typename Arcs, typename Lower>
 void bucket_shortest_paths(const Arcs& arcs, double width, std::vector<double>& distance,
-                           std::vector<std::pair<double, Vertex>> queued, const Lower& lower)
+                           const std::vector<std::pair<double, Vertex>>& queued, const Lower& lower,
+                           Shortest_path_buckets<Vertex>* room = nullptr)
 {
   typedef std::pair<double, Vertex> Entry;
-  constexpr std::size_t ring = 1024;
+  constexpr std::size_t ring = Shortest_path_buckets<Vertex>::ring;
   if(queued.empty())
     return;
   const double inverse = width > 0. && std::isfinite(1. / width) ? 1. / width : 1.;
-  std::vector<std::vector<Entry>> bucket(ring);
-  std::vector<Entry> work, heap; // heap: after the switch, ordered by std::greater
+  Shortest_path_buckets<Vertex> own;
+  Shortest_path_buckets<Vertex>& r = room ? *room : own;
+  std::vector<std::vector<Entry>>& bucket = r.bucket;
+  std::vector<Entry>& work = r.work;
+  std::vector<Entry>& heap = r.heap;
   const std::greater<Entry> later;
   std::size_t pending = 0, budget = 4 * distance.size() + ring;
   double current = std::floor(queued.front().first * inverse);
@@ -61,7 +76,10 @@ void bucket_shortest_paths(const Arcs& arcs, double width, std::vector<double>& 
   const auto to_heap = [&] {
     buckets = false;
     for(std::vector<Entry>& b : bucket)
+    {
       heap.insert(heap.end(), b.begin(), b.end());
+      b.clear();
+    }
     std::make_heap(heap.begin(), heap.end(), later);
   };
   const auto push = [&](double d, Vertex v) {
