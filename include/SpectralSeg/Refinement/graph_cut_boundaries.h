@@ -417,16 +417,17 @@ SPECTRALSEG_INLINE Graph_cut_problem graph_cut_problem(const Dual_graph& graph, 
     longest = sum > 0 ? sum / double(graph.number_of_edges()) : longest;
   }
   const double log_norm = std::log(options.angular_mapping + 1.);
-  std::vector<double> edge_costs;
-  edge_costs.reserve(graph.number_of_edges());
-  std::vector<double> smoothness_around(n, 0.);
-  for(const Dual_graph::Edge& e : graph.edges())
-  {
+  std::vector<double> edge_costs(graph.number_of_edges());
+  SpectralSeg::internal::parallel_range(0, edge_costs.size(), threads, [&](std::size_t i) {
+    const Dual_graph::Edge& e = graph.edge(Dual_graph::size_type(i));
     const double mapped = log_norm > 0 ? std::log(options.angular_mapping * angular.weight(e) + 1.) / log_norm : 0.;
-    const double c = options.smoothness * (e.length / longest) * std::max(0., 1. - mapped);
-    edge_costs.push_back(c);
-    smoothness_around[e.face[0]] += c;
-    smoothness_around[e.face[1]] += c;
+    edge_costs[i] = options.smoothness * (e.length / longest) * std::max(0., 1. - mapped);
+  });
+  std::vector<double> smoothness_around(n, 0.);
+  for(std::size_t i = 0; i < edge_costs.size(); ++i)
+  {
+    smoothness_around[graph.edge(Dual_graph::size_type(i)).face[0]] += edge_costs[i];
+    smoothness_around[graph.edge(Dual_graph::size_type(i)).face[1]] += edge_costs[i];
   }
 
   // The band: faces far from their segment's boundary keep their label.
@@ -443,80 +444,102 @@ SPECTRALSEG_INLINE Graph_cut_problem graph_cut_problem(const Dual_graph& graph, 
   const double unreachable = std::numeric_limits<double>::infinity();
 
   // Data term of each face; the faces it does not decide become the
-  // variables of the problem.
+  // variables of the problem, in face order.
   const double scale = std::max(1e-300, (proxies.rowwise() - proxies.colwise().mean()).norm());
   const Dual_graph::size_type none = Dual_graph::size_type(-1);
   std::vector<Dual_graph::size_type> variable(n, none);
   Potts_problem& problem = out.problem;
   problem.labels = k;
   std::vector<Dual_graph::size_type>& face_of_variable = out.face_of_variable;
-  std::vector<double> face_cost(k), within_reach;
   const Eigen::Index dims = embedding.cols();
   if(proxies.cols() != dims)
     throw Invalid_input("graph cut: the proxies and the embedding must have the same number of columns");
-  std::vector<double> row(static_cast<std::size_t>(dims)), proxy(k * static_cast<std::size_t>(dims));
+  std::vector<double> proxy(k * static_cast<std::size_t>(dims));
   for(std::size_t c = 0; c < k; ++c)
     for(Eigen::Index j = 0; j < dims; ++j)
       proxy[c * std::size_t(dims) + std::size_t(j)] = proxies(Eigen::Index(c), j);
-  // at most the band's faces become variables, with their own label and
-  // those within reach: reserved, so that the largest arrays of a large
-  // mesh are not grown by doubling
-  std::size_t band_faces = 0, band_terms = 0;
-  for(std::size_t f = 0; f < n; ++f)
-    if(in_band[f])
-    {
-      ++band_faces;
-      band_terms += options.band_width > 0. ? 1 + reach.offset[f + 1] - reach.offset[f] : k;
-    }
-  face_of_variable.reserve(band_faces);
-  problem.first.reserve(band_faces + 1);
-  problem.label.reserve(band_terms);
-  problem.cost.reserve(band_terms);
-  for(std::size_t f = 0; f < n; ++f)
+  // The faces in chunks, one task each: a chunk's variables and their
+  // finite terms, appended to the problem chunk after chunk (the problem
+  // one pass over the faces makes).
+  struct Chunk
   {
-    if(!in_band[f])
-      continue;
-    // the face's row read once (the embedding is stored column after column)
-    for(Eigen::Index j = 0; j < dims; ++j)
-      row[std::size_t(j)] = embedding(Eigen::Index(f), j);
-    double total = 0.;
-    for(std::size_t c = 0; c < k; ++c)
+    std::vector<Dual_graph::size_type> face;
+    Potts_problem terms;
+  };
+  const std::size_t chunks = std::min<std::size_t>(n, 16 * std::max(1u, threads));
+  std::vector<Chunk> chunk(chunks);
+  SpectralSeg::internal::parallel_range(0, chunks, threads, [&](std::size_t c) {
+    std::vector<double> face_cost(k), within_reach, row(static_cast<std::size_t>(dims));
+    Chunk& out_chunk = chunk[c];
+    for(std::size_t f = c * n / chunks; f < (c + 1) * n / chunks; ++f)
     {
-      // the squared norm summed coordinate after coordinate, as Eigen does
-      // for a row of a column-major matrix
-      const double* q = proxy.data() + c * std::size_t(dims);
-      double squared = 0.;
-      if(dims > 0)
+      if(!in_band[f])
+        continue;
+      // the face's row read once (the embedding is stored column after column)
+      for(Eigen::Index j = 0; j < dims; ++j)
+        row[std::size_t(j)] = embedding(Eigen::Index(f), j);
+      double total = 0.;
+      for(std::size_t l = 0; l < k; ++l)
       {
-        squared = (row[0] - q[0]) * (row[0] - q[0]);
-        for(std::size_t j = 1; j < std::size_t(dims); ++j)
-          squared += (row[j] - q[j]) * (row[j] - q[j]);
+        // the squared norm summed coordinate after coordinate, as Eigen does
+        // for a row of a column-major matrix
+        const double* q = proxy.data() + l * std::size_t(dims);
+        double squared = 0.;
+        if(dims > 0)
+        {
+          squared = (row[0] - q[0]) * (row[0] - q[0]);
+          for(std::size_t j = 1; j < std::size_t(dims); ++j)
+            squared += (row[j] - q[j]) * (row[j] - q[j]);
+        }
+        const double d = std::max(std::sqrt(squared), 1e-12 * scale);
+        face_cost[l] = 1. / d;
+        total += face_cost[l];
       }
-      const double d = std::max(std::sqrt(squared), 1e-12 * scale);
-      face_cost[c] = 1. / d;
-      total += face_cost[c];
+      for(std::size_t l = 0; l < k; ++l)
+        face_cost[l] = -std::log(face_cost[l] / total);
+      const std::size_t own = std::size_t(labels[f]);
+      if(options.band_width > 0.)
+      {
+        // only the own label and those within reach
+        within_reach.assign(k, unreachable);
+        within_reach[own] = face_cost[own];
+        for(std::size_t i = reach.offset[f]; i < reach.offset[f + 1]; ++i)
+          within_reach[std::size_t(reach.reachable[i])] = face_cost[std::size_t(reach.reachable[i])];
+        face_cost.swap(within_reach);
+      }
+      bool decided = options.fix_decided_faces;
+      for(std::size_t l = 0; l < k && decided; ++l)
+        if(l != own && face_cost[l] - face_cost[own] <= smoothness_around[f])
+          decided = false;
+      if(decided)
+        continue;
+      out_chunk.face.push_back(Dual_graph::size_type(f));
+      out_chunk.terms.add_vertex(face_cost);
     }
-    for(std::size_t c = 0; c < k; ++c)
-      face_cost[c] = -std::log(face_cost[c] / total);
-    const std::size_t own = std::size_t(labels[f]);
-    if(options.band_width > 0.)
+  });
+  std::size_t variables = 0, terms = 0;
+  for(const Chunk& c : chunk)
+  {
+    variables += c.face.size();
+    terms += c.terms.label.size();
+  }
+  face_of_variable.reserve(variables);
+  problem.first.reserve(variables + 1);
+  problem.label.reserve(terms);
+  problem.cost.reserve(terms);
+  for(Chunk& c : chunk)
+  {
+    const std::size_t base = problem.label.size();
+    for(std::size_t i = 0; i < c.face.size(); ++i)
     {
-      // only the own label and those within reach
-      within_reach.assign(k, unreachable);
-      within_reach[own] = face_cost[own];
-      for(std::size_t i = reach.offset[f]; i < reach.offset[f + 1]; ++i)
-        within_reach[std::size_t(reach.reachable[i])] = face_cost[std::size_t(reach.reachable[i])];
-      face_cost.swap(within_reach);
+      variable[c.face[i]] = Dual_graph::size_type(face_of_variable.size());
+      face_of_variable.push_back(c.face[i]);
+      problem.first.push_back(base + c.terms.first[i + 1]);
     }
-    bool decided = options.fix_decided_faces;
-    for(std::size_t c = 0; c < k && decided; ++c)
-      if(c != own && face_cost[c] - face_cost[own] <= smoothness_around[f])
-        decided = false;
-    if(decided)
-      continue;
-    variable[f] = Dual_graph::size_type(face_of_variable.size());
-    face_of_variable.push_back(Dual_graph::size_type(f));
-    problem.add_vertex(face_cost);
+    problem.label.insert(problem.label.end(), c.terms.label.begin(), c.terms.label.end());
+    problem.cost.insert(problem.cost.end(), c.terms.cost.begin(), c.terms.cost.end());
+    problem.vertices += c.face.size();
+    c = Chunk(); // its memory back before the next is copied
   }
   if(problem.vertices == 0)
     return out;
