@@ -8,6 +8,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -273,12 +274,13 @@ std::vector<std::size_t> best_expansion(const Potts_problem& p, const Potts_adja
 // otherwise its max-flow problem, and so its answer, would be the same.
 //
 // With `threads` > 1, the move of the next label due is computed on another
-// thread beside the current one, from the same labelling. A move reads the
-// labels of the vertices that may take its label and of their neighbours
-// only, so when the current move changes none of those, the next one's
-// answer is the one it would have computed after it, and it is kept;
-// otherwise it is computed again in its turn. The moves, their order and
-// the result are those of one thread, bit for bit. Deterministic. With
+// thread beside the current one, from a copy of the same labelling. A move
+// reads the labels of the vertices that may take its label and of their
+// neighbours only, so when the current move changes none of those, the
+// next one's answer is the one it would have computed after it, and it is
+// kept; otherwise it is computed again in its turn, without waiting for
+// the stale one to end (no move starts beside until it has). The moves,
+// their order and the result are those of one thread, bit for bit. Deterministic. With
 // `sweeps` > 0, at most that many sweeps run (0: until one changes
 // nothing). Returns the final energy.
 template <typename MaxFlow>
@@ -337,6 +339,21 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsi
     dirty[alpha] = 0; // touch() marked it too
     return true;
   };
+  // The move computed beside, on a copy of the labels as they were when it
+  // started: when the current move makes it stale, this thread goes on
+  // without waiting for it, and no other starts until it has ended (it uses
+  // the other thread's scratch). Declared last: destroyed (waited for)
+  // first.
+  double beta_delta = 0.;
+  std::future<std::vector<std::size_t>> beside;
+  const auto beside_free = [&] {
+    if(!beside.valid())
+      return true;
+    if(beside.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+      return false;
+    beside.get(); // a stale move's answer (or its exception) goes
+    return true;
+  };
   bool improved = true;
   for(std::size_t sweep = 0; improved && (sweeps == 0 || sweep < sweeps); ++sweep)
   {
@@ -353,19 +370,17 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsi
       while(beta < p.labels && !dirty[beta])
         ++beta;
       double delta = 0.;
-      if(!pairs || beta == p.labels)
+      if(!pairs || beta == p.labels || !beside_free())
       {
         const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta, flow);
         improved |= apply(alpha, taken, delta);
         ++alpha;
         continue;
       }
-      double beta_delta = 0.;
-      std::future<std::vector<std::size_t>> beta_move = std::async(std::launch::async, [&] {
-        return best_expansion<MaxFlow>(p, adjacency, l, beta, other_candidate, beta_delta, other_flow);
+      beside = std::async(std::launch::async, [&, beta, labels = l]() {
+        return best_expansion<MaxFlow>(p, adjacency, labels, beta, other_candidate, beta_delta, other_flow);
       });
       const std::vector<std::size_t> taken = best_expansion<MaxFlow>(p, adjacency, l, alpha, candidate, delta, flow);
-      const std::vector<std::size_t> beta_taken = beta_move.get();
       const bool moved = apply(alpha, taken, delta);
       improved |= moved;
       // beta is next when no label between became due, and its answer
@@ -375,6 +390,7 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsi
         ++next;
       if(next == beta && !(moved && reads(beta, taken)))
       {
+        const std::vector<std::size_t> beta_taken = beside.get();
         dirty[beta] = 0;
         improved |= apply(beta, beta_taken, beta_delta);
         alpha = beta + 1;
@@ -383,6 +399,8 @@ double alpha_expansion(const Potts_problem& p, std::vector<std::size_t>& l, unsi
         alpha = next;
     }
   }
+  if(beside.valid())
+    beside.wait(); // before the scratch it uses goes
   return energy;
 }
 
