@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <map>
 #include <string>
@@ -208,6 +209,15 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
     return r;
   }
   const std::size_t clusters = std::min(options.clusters, n - 1);
+  // the merges' crease regions and concave angles depend on the mesh only:
+  // made on another thread while this one embeds (whose diameter search
+  // runs on one)
+  const bool early = exec.threads() > 1;
+  std::future<internal::Contrast_merge_shared> made;
+  if(early)
+    made = std::async(std::launch::async, [&graph, &options] {
+      return internal::contrast_merge_shared(graph, options.k_way, options.reference_faces);
+    });
   r.embedding = internal::embed(graph, clusters, options.k_way.kernel, options.k_way.embedding, exec);
   lap("embedding");
   if(r.embedding.coordinates.cols() == 0)
@@ -221,9 +231,11 @@ K_way_result segment_hybrid(const Weighted_dual_graph& graph,
                                  options.k_way.kmeans_sample_limit);
   exec.report("k-means", 1.);
   lap("k-means");
+  const internal::Contrast_merge_shared shared = early ? made.get() : internal::Contrast_merge_shared();
   std::size_t m = internal::merge_most_typical_over_segmentation(
     graph, options.k_way, clusters, options.over_segmentations, options.min_segments, options.min_boundary_contrast,
-    options.neck_scale, options.reference_faces, options.parts, r, exec);
+    options.neck_scale, options.reference_faces, options.parts, r, exec,
+    early ? &shared : nullptr);
   if(options.parts > 0)
   {
     r.labels = r.hierarchy.labels_with_parts(options.parts);

@@ -450,6 +450,15 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
   const bool share = eo.sampling == Embedding::Sampling_method::farthest_point && eo.samples == 0 &&
                      (eo.method == Embedding::Method::nystrom ||
                       (eo.method == Embedding::Method::automatic && n > eo.exact_face_limit));
+  // the contrast candidate's crease regions and concave angles depend on
+  // the mesh only: made on another thread while this one samples (whose
+  // diameter search runs on one)
+  const bool contrast = options.contrast_merge_clusters > 0 && exec.threads() > 1;
+  std::future<internal::Contrast_merge_shared> made;
+  if(contrast)
+    made = std::async(std::launch::async, [&graph, &options] {
+      return internal::contrast_merge_shared(graph, options, internal::default_reference_faces);
+    });
   Embedding::internal::Nystrom_rows shared;
   if(share)
   {
@@ -508,7 +517,8 @@ K_way_result segment_k_way(const Weighted_dual_graph& graph, std::size_t k,
       {
         // the contrast merge down to k segments: its hierarchy cut at k
         const internal::Contrast_merge_shared shared_merge =
-          internal::contrast_merge_shared(graph, options, internal::default_reference_faces, exec.threads());
+          contrast ? made.get()
+                   : internal::contrast_merge_shared(graph, options, internal::default_reference_faces, exec.threads());
         const std::size_t m = internal::merge_clusters_by_contrast(
           graph, options, k, std::numeric_limits<double>::infinity(), internal::default_neck_scale,
           internal::default_reference_faces, c, &histories[i], &shared_merge);

@@ -207,7 +207,8 @@ SPECTRALSEG_INLINE std::vector<Clustering::Kmeans_result> coarser_clusterings(
 // merges and `r.clusters` its clusters. With `parts` > 0 only those of at
 // least `parts` clusters may be kept (all still vote), so that the kept
 // hierarchy can be cut at `parts`. The crease regions and concave angles
-// are made once for all the merges. With `count` at most 1 (or too few
+// are made once for all the merges (or given in `made`, made by
+// contrast_merge_shared() with the same settings). With `count` at most 1 (or too few
 // clusters), merge_clusters_by_contrast() on `r.clusters` alone. Returns
 // the number of segments of the answer.
 template <typename AffinityKernel>
@@ -215,7 +216,8 @@ std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& grap
                                                  const Basic_K_way_options<AffinityKernel>& k_way,
                                                  std::size_t clusters, std::size_t count, std::size_t min_segments,
                                                  double limit, double neck_scale, std::size_t reference_faces,
-                                                 std::size_t parts, K_way_result& r, const Execution& exec)
+                                                 std::size_t parts, K_way_result& r, const Execution& exec,
+                                                 const Contrast_merge_shared* made = nullptr)
 {
   std::vector<std::size_t> sizes;
   for(std::size_t i = 1; i < count && clusters >= 2 * i + 2; ++i)
@@ -224,7 +226,9 @@ std::size_t merge_most_typical_over_segmentation(const Weighted_dual_graph& grap
     coarser_clusterings(r.embedding.coordinates, r.clusters.labels, clusters, sizes, k_way.kmeans_iterations,
                         k_way.kmeans_sample_limit, exec);
   members.insert(members.begin(), std::move(r.clusters));
-  const Contrast_merge_shared shared = contrast_merge_shared(graph, k_way, reference_faces, exec.threads());
+  const Contrast_merge_shared own =
+    made ? Contrast_merge_shared() : contrast_merge_shared(graph, k_way, reference_faces, exec.threads());
+  const Contrast_merge_shared& shared = made ? *made : own;
   // the merges, each on one thread and on its own labels, side by side
   std::vector<std::vector<int>> answers(members.size());
   std::vector<std::size_t> counts(members.size());
