@@ -13,6 +13,17 @@
 namespace SpectralSeg {
 namespace internal {
 
+// The memory of bucket_shortest_paths(): its ring of buckets, a bucket's
+// vertices being relaxed, and the heap it may switch to; empty between
+// runs, so that a task making many runs allocates once.
+template <typename Vertex>
+struct Shortest_path_buckets
+{
+  static constexpr std::size_t ring = 1024;
+  std::vector<std::vector<std::pair<double, Vertex>>> bucket = std::vector<std::vector<std::pair<double, Vertex>>>(ring);
+  std::vector<std::pair<double, Vertex>> work, heap; // heap: after a switch, ordered by std::greater
+};
+
 // Lowers `distance` to the shortest-path distances from the vertices of
 // `queued` (each with the distance it now has in `distance`) over the arcs
 // that `arcs(u, fn)` lists by calling `fn(v, w)` for each arc u -> v of
@@ -41,17 +52,7 @@ namespace internal {
 // thousand times `width`), or relaxations past four per vertex of
 // `distance`, send the waiting vertices to a heap, and the run ends as
 // Dijkstra's: the same distances, and never much more work than Dijkstra's.
-//
-// `room`, when given, keeps the buckets' memory from one run to the next
-// (empty between runs).
-template <typename Vertex>
-struct Shortest_path_buckets
-{
-  static constexpr std::size_t ring = 1024;
-  std::vector<std::vector<std::pair<double, Vertex>>> bucket = std::vector<std::vector<std::pair<double, Vertex>>>(ring);
-  std::vector<std::pair<double, Vertex>> work, heap; // heap: after a switch, ordered by std::greater
-};
-
+// `room`, when given, serves as the run's memory.
 template <typename Vertex, typename Arcs, typename Lower>
 void bucket_shortest_paths(const Arcs& arcs, double width, std::vector<double>& distance,
                            const std::vector<std::pair<double, Vertex>>& queued, const Lower& lower,
