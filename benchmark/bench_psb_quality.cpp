@@ -35,6 +35,7 @@
 //   --candidates-out F.tsv  method kway: every over-segmentation candidate of each model (K_way_result::candidates)
 //                           with its concave normalized cut before and after its graph cut, whether it was kept,
 //                           and its own Rand-index error: the choice between them can be replayed offline
+//                           (with --labels-dir also each candidate's labels, candidateI_ID.seg)
 //   --shard i/N             run only the models whose row number is i mod N
 //   --out FILE.tsv          per-model rows (default: stdout only)
 //   --alpha A --beta B --gamma C   part-aware coefficients
@@ -752,17 +753,17 @@ int run(int argc, char** argv)
       const double ri = mean_error(labels);
       Row r{id, category, method_name, g.number_of_faces(), k, 0, ri, seconds, {}};
       r.segments = std::set<int>(labels.begin(), labels.end()).size();
-      if(!o.labels_dir.empty())
-      {
+      // labels in the .off file's face order, as NAME.seg in --labels-dir
+      const auto write_labels = [&](const std::string& name, const std::vector<int>& mesh_order) {
         fs::create_directories(o.labels_dir);
-        std::vector<int> file_order(report.face_of_input_face.size(), -1);
-        for(std::size_t input = 0; input < file_order.size(); ++input)
-          if(report.face_of_input_face[input] != report.no_face)
-            file_order[input] = labels.at(report.face_of_input_face[input]);
-        std::ofstream seg(fs::path(o.labels_dir) / (method_name + "_" + id + ".seg"));
-        for(int l : file_order)
-          seg << l << '\n';
-      }
+        std::ofstream seg(fs::path(o.labels_dir) / (name + ".seg"));
+        for(std::size_t input = 0; input < report.face_of_input_face.size(); ++input)
+          seg << (report.face_of_input_face[input] != report.no_face ? mesh_order.at(report.face_of_input_face[input])
+                                                                      : -1)
+              << '\n';
+      };
+      if(!o.labels_dir.empty())
+        write_labels(method_name + "_" + id, labels);
       if(!o.png_dir.empty())
         r.labels = labels;
       rows.push_back(r);
@@ -779,6 +780,8 @@ int run(int argc, char** argv)
                        << (c.contrast_merge ? "contrast" : "concave") << '\t' << c.number_of_segments << '\t'
                        << std::setprecision(17) << c.normalized_cut_before_graph_cut << '\t' << c.normalized_cut
                        << '\t' << std::setprecision(6) << mean_error(c.labels) << '\t' << (c.kept ? 1 : 0) << '\n';
+        if(!o.labels_dir.empty())
+          write_labels("candidate" + std::to_string(i) + "_" + id, c.labels);
       }
     }
   }

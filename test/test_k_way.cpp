@@ -22,7 +22,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
+#include <random>
 #include <set>
 #include <string>
 
@@ -437,6 +439,129 @@ TEST_CASE("islands are merged into the neighbour with the longest shared boundar
   CHECK(Refinement::make_segments_connected(g, labels) == 2);
   CHECK(labels[5] == 0);
   CHECK(labels[11] == 1);
+}
+
+namespace {
+// make_segments_connected() by its definition: every region found again
+// (depth-first floods from each region's smallest face, areas summed in the
+// flood's order) before each merge of the smallest island.
+std::size_t connected_by_definition(const Dual_graph& g, std::vector<int>& labels)
+{
+  const std::size_t n = g.number_of_faces();
+  int fresh = *std::max_element(labels.begin(), labels.end()) + 1;
+  for(;;)
+  {
+    std::vector<int> region(n, -1);
+    std::vector<std::vector<Dual_graph::size_type>> faces; // in flood order
+    std::vector<double> area;
+    for(std::size_t s = 0; s < n; ++s)
+    {
+      if(region[s] >= 0)
+        continue;
+      const int r = int(faces.size());
+      faces.emplace_back();
+      area.push_back(0.);
+      std::vector<Dual_graph::size_type> stack{Dual_graph::size_type(s)};
+      region[s] = r;
+      while(!stack.empty())
+      {
+        const Dual_graph::size_type f = stack.back();
+        stack.pop_back();
+        area[std::size_t(r)] += g.geometry().areas[f];
+        faces[std::size_t(r)].push_back(f);
+        g.for_each_neighbour(f, [&](Dual_graph::size_type h, Dual_graph::size_type) {
+          if(region[h] < 0 && labels[h] == labels[f])
+          {
+            region[h] = r;
+            stack.push_back(h);
+          }
+        });
+      }
+    }
+    std::map<int, int> main_region; // the largest, the first on ties
+    for(std::size_t r = 0; r < faces.size(); ++r)
+    {
+      const int l = labels[faces[r].front()];
+      if(!main_region.count(l) || area[r] > area[std::size_t(main_region[l])])
+        main_region[l] = int(r);
+    }
+    std::vector<int> islands;
+    for(std::size_t r = 0; r < faces.size(); ++r)
+      if(main_region[labels[faces[r].front()]] != int(r))
+        islands.push_back(int(r));
+    std::sort(islands.begin(), islands.end(), [&](int a, int b) {
+      return std::make_pair(area[std::size_t(a)], a) < std::make_pair(area[std::size_t(b)], b);
+    });
+    bool merged = false;
+    for(const int isl : islands)
+    {
+      std::map<int, double> boundary;
+      for(const auto f : faces[std::size_t(isl)])
+        g.for_each_neighbour(f, [&](Dual_graph::size_type h, Dual_graph::size_type e) {
+          if(region[h] != isl)
+            boundary[labels[h]] += g.edge(e).length;
+        });
+      int target = fresh;
+      double longest = -1.;
+      for(const auto& b : boundary)
+        if(b.second > longest)
+        {
+          longest = b.second;
+          target = b.first;
+        }
+      for(const auto f : faces[std::size_t(isl)])
+        labels[f] = target;
+      if(target == fresh)
+      {
+        ++fresh;
+        continue;
+      }
+      merged = true;
+      break;
+    }
+    if(!merged)
+      break;
+  }
+  std::map<int, int> renumber;
+  for(int& l : labels)
+    l = renumber.try_emplace(l, int(renumber.size())).first->second;
+  return renumber.size();
+}
+} // namespace
+
+TEST_CASE("connected segments: the answer of finding every region again after each merge", "[k_way][connected]")
+{
+  // a box of equal right triangles (areas tie everywhere) and an unwelded
+  // copy (six components, isolated islands), labels from a few seeds plus
+  // scattered islands, some of them of labels found nowhere else
+  const test_meshes::Soup soup = test_meshes::box(1., 1., 1., 8);
+  for(const bool weld : {true, false})
+  {
+    const Dual_graph g =
+      make_dual_graph(test_meshes::to_mesh<Mesh>(weld ? test_meshes::welded(soup) : soup), parameters::connect_touching_parts(false));
+    const std::size_t n = g.number_of_faces();
+    std::mt19937 random(5);
+    for(int trial = 0; trial < 12; ++trial)
+    {
+      const int k = 2 + trial % 5;
+      std::vector<int> labels(n);
+      for(std::size_t f = 0; f < n; ++f)
+        labels[f] = int((f * std::size_t(k)) / n);
+      const std::size_t islands = std::size_t(trial) * n / 24;
+      for(std::size_t i = 0; i < islands; ++i)
+      {
+        const std::size_t f = random() % n;
+        const int l = int(random() % std::uint32_t(k + 2)) * (trial % 3 == 2 ? -1000003 : 1);
+        labels[f] = l;
+        if(random() % 2)
+          g.for_each_neighbour(Dual_graph::size_type(f), [&](Dual_graph::size_type h, Dual_graph::size_type) { labels[h] = l; });
+      }
+      std::vector<int> expected = labels;
+      const std::size_t count = connected_by_definition(g, expected);
+      CHECK(Refinement::make_segments_connected(g, labels) == count);
+      CHECK(labels == expected);
+    }
+  }
 }
 
 TEST_CASE("kmeans separates two blobs from max-min seeds", "[kmeans]")
