@@ -63,7 +63,7 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
                         " distinct faces: the file is mostly copies of the same faces, not a surface");
   // an oriented manifold soup (the usual file) has no non-manifold edge and
   // needs no orientation pass
-  const bool oriented_manifold = is_oriented_manifold_soup(soup.points.size(), clean.triangles);
+  const bool oriented_manifold = is_oriented_manifold_soup(soup.points.size(), clean.triangles, threads);
   report.non_manifold_edges = oriented_manifold ? 0 : count_non_manifold_edges(clean.triangles);
 
   // vertices no kept face uses are left out:
@@ -96,8 +96,8 @@ Mesh_file_report polygon_soup_to_mesh(Polygon_soup& soup, const std::string& nam
   // CGAL's construction is quadratic in a vertex's degree; the mesh it
   // would make is made directly when the soup allows it (always, unless
   // orienting it failed)
-  if(oriented_manifold || is_oriented_manifold_soup(points.size(), triangles))
-    oriented_manifold_soup_to_mesh(points, triangles, mesh);
+  if(oriented_manifold || is_oriented_manifold_soup(points.size(), triangles, threads))
+    oriented_manifold_soup_to_mesh(points, triangles, mesh, threads);
   else
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   if(num_faces(mesh) != triangles.size())

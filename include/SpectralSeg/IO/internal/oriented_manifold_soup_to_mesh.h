@@ -4,6 +4,8 @@
 #ifndef SPECTRALSEG_IO_INTERNAL_ORIENTED_MANIFOLD_SOUP_TO_MESH_H
 #define SPECTRALSEG_IO_INTERNAL_ORIENTED_MANIFOLD_SOUP_TO_MESH_H
 
+#include <SpectralSeg/internal/parallel_for.h>
+
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -31,11 +33,12 @@ namespace internal {
 // around one vertex); here each corner finds its opposite corner by
 // bisection among the corners leaving the same vertex. Each vertex's
 // halfedge ends at it, and is a border halfedge on a border, as CGAL keeps
-// them.
+// them. The corners' sorts and their opposite corners are found on
+// `threads` threads; the mesh does not depend on their number.
 template <typename Point>
 void oriented_manifold_soup_to_mesh(const std::vector<Point>& points,
                                     const std::vector<std::array<std::size_t, 3>>& triangles,
-                                    CGAL::Surface_mesh<Point>& mesh)
+                                    CGAL::Surface_mesh<Point>& mesh, unsigned threads = 1)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   typedef typename Mesh::Vertex_index Vertex;
@@ -59,8 +62,9 @@ void oriented_manifold_soup_to_mesh(const std::vector<Point>& points,
     for(std::size_t c = 0; c < 3 * nt; ++c)
       leaving[fill[from(c)]++] = {std::uint32_t(to(c)), c};
   }
-  for(std::size_t v = 0; v < nv; ++v)
+  ::SpectralSeg::internal::parallel_range(0, nv, threads, [&](std::size_t v) {
     std::sort(leaving.begin() + std::ptrdiff_t(first[v]), leaving.begin() + std::ptrdiff_t(first[v + 1]));
+  });
   // the corner running the other way along c's edge, or none
   const auto opposite_corner = [&](std::size_t c) {
     const std::size_t b = to(c);
@@ -70,13 +74,16 @@ void oriented_manifold_soup_to_mesh(const std::vector<Point>& points,
   };
 
   // halfedge 2 e runs as the corner that first meets edge e, 2 e + 1 back
+  std::vector<std::size_t> opposite(3 * nt);
+  ::SpectralSeg::internal::parallel_range(0, 3 * nt, threads,
+                                          [&](std::size_t c) { opposite[c] = opposite_corner(c); });
   std::vector<std::size_t> halfedge_of(3 * nt, none);
   std::size_t edges = 0;
   for(std::size_t c = 0; c < 3 * nt; ++c)
     if(halfedge_of[c] == none)
     {
       halfedge_of[c] = 2 * edges;
-      const std::size_t o = opposite_corner(c);
+      const std::size_t o = opposite[c];
       if(o != none)
         halfedge_of[o] = 2 * edges + 1;
       ++edges;

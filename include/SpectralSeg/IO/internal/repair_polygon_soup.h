@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <iterator>
@@ -243,7 +244,9 @@ SPECTRALSEG_INLINE std::size_t count_non_manifold_edges(const std::vector<std::a
 // around each vertex one fan. Then CGAL's orient_polygon_soup() has nothing
 // to do. O(n log d) for n triangles and vertex degrees up to d (a fan of a
 // million triangles around one vertex included); indices must fit 32 bits.
-SPECTRALSEG_INLINE bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<std::array<std::size_t, 3>>& triangles)
+// The vertices are checked on `threads` threads (the answer is the same).
+SPECTRALSEG_INLINE bool is_oriented_manifold_soup(std::size_t vertices, const std::vector<std::array<std::size_t, 3>>& triangles,
+                                                  unsigned threads = 1)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   if(vertices >= (std::size_t(1) << 32))
@@ -260,17 +263,17 @@ SPECTRALSEG_INLINE bool is_oriented_manifold_soup(std::size_t vertices, const st
   for(std::size_t v = 0; v < vertices; ++v)
     first[v + 1] += first[v];
   std::vector<std::pair<std::uint32_t, std::uint32_t>> link(first[vertices]);
-  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-  for(const auto& t : triangles)
-    for(std::size_t i = 0; i < 3; ++i)
-      link[fill[t[i]]++] = {std::uint32_t(t[(i + 1) % 3]), std::uint32_t(t[(i + 2) % 3])};
-  std::vector<std::uint8_t> has_predecessor;
-  for(std::size_t v = 0; v < vertices; ++v)
   {
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(const auto& t : triangles)
+      for(std::size_t i = 0; i < 3; ++i)
+        link[fill[t[i]]++] = {std::uint32_t(t[(i + 1) % 3]), std::uint32_t(t[(i + 2) % 3])};
+  }
+  const auto regular = [&](std::size_t v, std::vector<std::uint8_t>& has_predecessor) {
     const auto lo = link.begin() + std::ptrdiff_t(first[v]), hi = link.begin() + std::ptrdiff_t(first[v + 1]);
     const std::size_t degree = std::size_t(hi - lo);
     if(degree < 2)
-      continue;
+      return true;
     std::sort(lo, hi); // by link vertex: its successor is found by bisection
     const auto successor_of = [&](std::uint32_t a) {
       const auto e = std::lower_bound(lo, hi, a, [](const std::pair<std::uint32_t, std::uint32_t>& x, std::uint32_t y) {
@@ -312,10 +315,18 @@ SPECTRALSEG_INLINE bool is_oriented_manifold_soup(std::size_t vertices, const st
       if(at == start || walked > degree)
         break;
     }
-    if(walked != degree)
-      return false;
-  }
-  return true;
+    return walked == degree;
+  };
+  // each vertex's link is its own: the vertices in blocks, any order
+  const std::size_t block = 4096;
+  std::atomic<bool> ok(true);
+  ::SpectralSeg::internal::parallel_range(0, (vertices + block - 1) / block, threads, [&](std::size_t b) {
+    std::vector<std::uint8_t> has_predecessor;
+    for(std::size_t v = b * block; v < std::min(vertices, (b + 1) * block) && ok.load(std::memory_order_relaxed); ++v)
+      if(!regular(v, has_predecessor))
+        ok = false;
+  });
+  return ok;
 }
 #else
 ;
