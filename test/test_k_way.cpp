@@ -501,14 +501,10 @@ std::size_t connected_by_definition(const Dual_graph& g, std::vector<int>& label
           if(region[h] != isl)
             boundary[labels[h]] += g.edge(e).length;
         });
-      int target = fresh;
-      double longest = -1.;
-      for(const auto& b : boundary)
-        if(b.second > longest)
-        {
-          longest = b.second;
-          target = b.first;
-        }
+      // the longest shared boundary (the smallest label on ties), or none
+      const auto longest = std::max_element(boundary.begin(), boundary.end(),
+                                            [](const auto& a, const auto& b) { return a.second < b.second; });
+      const int target = longest == boundary.end() ? fresh : longest->first;
       for(const auto f : faces[std::size_t(isl)])
         labels[f] = target;
       if(target == fresh)
