@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -63,8 +64,8 @@ void bucket_shortest_paths(const Arcs& arcs, double width, std::vector<double>& 
   if(queued.empty())
     return;
   const double inverse = width > 0. && std::isfinite(1. / width) ? 1. / width : 1.;
-  Shortest_path_buckets<Vertex> own;
-  Shortest_path_buckets<Vertex>& r = room ? *room : own;
+  std::optional<Shortest_path_buckets<Vertex>> own; // made only without `room`: 1,024 buckets
+  Shortest_path_buckets<Vertex>& r = room ? *room : own.emplace();
   std::vector<std::vector<Entry>>& bucket = r.bucket;
   std::vector<Entry>& work = r.work;
   std::vector<Entry>& heap = r.heap;
