@@ -129,6 +129,18 @@ TEST_CASE("duplicate, invalid and degenerate faces are reported", "[input]")
     IO::values_in_input_order(r, std::vector<double>(num_faces(m), 1.), std::numeric_limits<double>::quiet_NaN());
   CHECK(std::isnan(values[3]));
   CHECK(values[1] == 1.);
+
+  // a quad, a face of two vertices and a triangle: as many corners as three
+  // triangles, read as the polygons they are
+  const std::string mixed = "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 1\n4 0 1 2 3\n2 0 1\n3 1 4 2\n";
+  Mesh mm;
+  const IO::Mesh_file_report mr = IO::read_mesh_file(write_temp("mixed.off", mixed), mm);
+  CHECK(mr.non_triangle_faces == 1);
+  CHECK(mr.triangles_from_polygons == 2);
+  CHECK(mr.invalid_faces == 1);
+  CHECK(num_faces(mm) == 3);
+  CHECK(mr.face_of_input_face[1] == IO::Mesh_file_report::no_face);
+  CHECK(mr.face_of_input_face[2] != IO::Mesh_file_report::no_face);
 }
 
 TEST_CASE("STL corners are welded", "[input]")

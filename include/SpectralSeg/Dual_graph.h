@@ -7,6 +7,8 @@
 
 #include <SpectralSeg/Mesh_geometry.h>
 #include <SpectralSeg/internal/contact_adjacencies.h>
+#include <SpectralSeg/internal/execution_from.h>
+#include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 #include <SpectralSeg/named_parameters.h>
 
@@ -121,13 +123,14 @@ public:
 
   Dual_graph() = default;
 
-  /// Builds the graph from a mesh geometry and its face adjacencies.
-  /// Degenerate faces receive the normal of their neighbours here.
+  /// Builds the graph from a mesh geometry and its face adjacencies, on
+  /// `threads` threads (0: all hardware threads; the graph does not depend
+  /// on it). Degenerate faces receive the normal of their neighbours here.
   Dual_graph(Mesh_geometry geometry, const std::vector<Adjacency>& adjacencies,
-             std::size_t number_of_border_edges = 0)
+             std::size_t number_of_border_edges = 0, unsigned threads = 1)
     : geometry_(std::move(geometry)), border_edges_(number_of_border_edges)
   {
-    build(adjacencies);
+    build(adjacencies, Execution(threads).threads());
   }
 
   /// the geometry the graph was built from
@@ -164,13 +167,13 @@ public:
   }
 
 private:
-  void build(const std::vector<Adjacency>& adjacencies);
+  void build(const std::vector<Adjacency>& adjacencies, unsigned threads);
 
   // Degenerate faces take the area-weighted mean normal of their neighbours
   // with a defined normal; repeated so that runs of degenerate faces fill in.
   void fill_degenerate_normals();
 
-  void compute_edge_geometry();
+  void compute_edge_geometry(unsigned threads);
 
   void compute_components();
 
@@ -184,7 +187,7 @@ private:
 };
 
 #if SPECTRALSEG_DEFINE_FUNCTIONS
-SPECTRALSEG_INLINE void Dual_graph::build(const std::vector<Adjacency>& adjacencies)
+SPECTRALSEG_INLINE void Dual_graph::build(const std::vector<Adjacency>& adjacencies, unsigned threads)
 {
   const std::size_t nf = geometry_.number_of_faces();
   edges_.clear();
@@ -220,20 +223,19 @@ SPECTRALSEG_INLINE void Dual_graph::build(const std::vector<Adjacency>& adjacenc
     }
   }
   std::vector<Arc> arc_props(arcs.size());
-  for(std::size_t f = 0; f < nf; ++f)
-  {
+  internal::parallel_range(0, nf, threads, [&](std::size_t f) {
     std::sort(arcs.begin() + std::ptrdiff_t(first[f]), arcs.begin() + std::ptrdiff_t(first[f + 1]));
     for(std::size_t i = first[f]; i < first[f + 1]; ++i)
     {
       arc_props[i] = Arc{arcs[i].second};
       arcs[i] = {static_cast<size_type>(f), arcs[i].first};
     }
-  }
+  });
   csr_ = Csr(boost::edges_are_sorted, arcs.begin(), arcs.end(), arc_props.begin(),
              static_cast<size_type>(nf));
 
   fill_degenerate_normals();
-  compute_edge_geometry();
+  compute_edge_geometry(threads);
   compute_components();
 }
 
@@ -267,11 +269,10 @@ SPECTRALSEG_INLINE void Dual_graph::fill_degenerate_normals()
   }
 }
 
-SPECTRALSEG_INLINE void Dual_graph::compute_edge_geometry()
+SPECTRALSEG_INLINE void Dual_graph::compute_edge_geometry(unsigned threads)
 {
-  longest_edge_ = 0.;
-  for(Edge& e : edges_)
-  {
+  internal::parallel_range(0, edges_.size(), threads, [&](std::size_t i) {
+    Edge& e = edges_[i];
     const Eigen::Vector3d& p = geometry_.points[e.vertex[0]];
     const Eigen::Vector3d& q = geometry_.points[e.vertex[1]];
     const Eigen::Vector3d& c0 = geometry_.centroids[e.face[0]];
@@ -285,8 +286,10 @@ SPECTRALSEG_INLINE void Dual_graph::compute_edge_geometry()
     const internal::Fold fold = internal::fold_between(n0, n1, c0, c1);
     e.normal_angle = fold.angle;
     e.concave = fold.concave;
+  });
+  longest_edge_ = 0.;
+  for(const Edge& e : edges_)
     longest_edge_ = std::max(longest_edge_, e.length);
-  }
 }
 
 SPECTRALSEG_INLINE void Dual_graph::compute_components()
@@ -360,6 +363,11 @@ SPECTRALSEG_INLINE void Dual_graph::compute_components()
 ///     \cgalParamType{`double`, finite, at least 0}
 ///     \cgalParamDefault{0.005}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads of the graph's construction; 0 means all hardware threads. The graph does not depend on it}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{speck_area_fraction}
 ///     \cgalParamDescription{parts with less than this fraction of the mesh's area that touch nothing are linked to the nearest other part (0: none)}
 ///     \cgalParamType{`double`, in [0, 1]}
@@ -418,7 +426,7 @@ Dual_graph make_dual_graph(const TriangleMesh& tm,
       adjacencies.push_back(a);
     }
   }
-  return Dual_graph(std::move(geometry), adjacencies, border);
+  return Dual_graph(std::move(geometry), adjacencies, border, internal::execution_from(np).threads());
 }
 
 } // namespace SpectralSeg

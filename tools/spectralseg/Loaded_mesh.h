@@ -33,7 +33,7 @@ struct Loaded_mesh
   // Without `keep_mesh` the halfedge mesh is released once the dual graph
   // is built (the graph holds all the geometry the methods and the picture
   // use; only the mesh outputs need the mesh): on a large mesh it is a
-  // twentieth of the peak memory of a segmentation. The reading's sorts run
+  // twentieth of the peak memory of a segmentation. The reading and the dual graph run
   // on `threads` threads (0: all); the heap memory the file will need gets
   // its page size chosen and, with more than one thread, is faulted in on
   // two threads first (prepare_heap()).
@@ -43,7 +43,7 @@ struct Loaded_mesh
     report = SpectralSeg::IO::read_mesh_file(path, mesh, SpectralSeg::parameters::number_of_threads(threads));
     for(const std::string& w : report.warnings)
       out.message("warning: " + w);
-    graph = SpectralSeg::make_dual_graph(mesh);
+    graph = SpectralSeg::make_dual_graph(mesh, SpectralSeg::parameters::number_of_threads(threads));
     if(!keep_mesh)
       mesh = Mesh();
     const std::size_t degenerate = graph.geometry().number_of_degenerate_faces();

@@ -99,26 +99,50 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
   std::vector<std::size_t> polygons, keys;
   std::vector<std::size_t> begin(faces + 1, 0);
   std::vector<std::uint8_t> valid(faces, 0);
-  polygons.reserve(soup.corners.size());
-  keys.reserve(soup.corners.size());
-  for(std::size_t p = 0; p < faces; ++p)
+  // a soup of triangles only (the usual file): each face in place, on
+  // `threads` threads; a triangle is valid when its three welded vertices
+  // differ, and then its polygon is those three (what the loop below makes)
+  bool all_triangles = soup.corners.size() == 3 * faces;
+  for(std::size_t p = 0; all_triangles && p < faces; ++p)
+    all_triangles = soup.face_begin[p + 1] == 3 * (p + 1);
+  if(all_triangles)
   {
-    const std::size_t start = polygons.size();
-    for(std::size_t i = 0; i < soup.face_size(p); ++i)
+    polygons.resize(3 * faces);
+    keys.resize(3 * faces);
+    ::SpectralSeg::internal::parallel_range(0, faces, threads, [&](std::size_t p) {
+      const std::size_t* corner = soup.face(p);
+      std::size_t* polygon = polygons.data() + 3 * p;
+      std::size_t* key = keys.data() + 3 * p;
+      for(int i = 0; i < 3; ++i)
+        polygon[i] = key[i] = weld[corner[i]];
+      std::sort(key, key + 3);
+      begin[p + 1] = 3 * (p + 1);
+      valid[p] = key[0] != key[1] && key[1] != key[2] ? 1 : 0;
+    });
+  }
+  else
+  {
+    polygons.reserve(soup.corners.size());
+    keys.reserve(soup.corners.size());
+    for(std::size_t p = 0; p < faces; ++p)
     {
-      const std::size_t w = weld[soup.face(p)[i]];
-      if(polygons.size() == start || polygons.back() != w)
-        polygons.push_back(w);
+      const std::size_t start = polygons.size();
+      for(std::size_t i = 0; i < soup.face_size(p); ++i)
+      {
+        const std::size_t w = weld[soup.face(p)[i]];
+        if(polygons.size() == start || polygons.back() != w)
+          polygons.push_back(w);
+      }
+      while(polygons.size() > start + 1 && polygons[start] == polygons.back())
+        polygons.pop_back();
+      keys.insert(keys.end(), polygons.begin() + std::ptrdiff_t(start), polygons.end());
+      std::sort(keys.begin() + std::ptrdiff_t(start), keys.end());
+      begin[p + 1] = polygons.size();
+      valid[p] = (polygons.size() - start >= 3 &&
+                  std::adjacent_find(keys.begin() + std::ptrdiff_t(start), keys.end()) == keys.end())
+                   ? 1
+                   : 0;
     }
-    while(polygons.size() > start + 1 && polygons[start] == polygons.back())
-      polygons.pop_back();
-    keys.insert(keys.end(), polygons.begin() + std::ptrdiff_t(start), polygons.end());
-    std::sort(keys.begin() + std::ptrdiff_t(start), keys.end());
-    begin[p + 1] = polygons.size();
-    valid[p] = (polygons.size() - start >= 3 &&
-                std::adjacent_find(keys.begin() + std::ptrdiff_t(start), keys.end()) == keys.end())
-                 ? 1
-                 : 0;
   }
 
   // Repeats: the valid faces sorted by key, ties by file order.
@@ -140,11 +164,10 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
   if(small_triangles) // the common case, sorted by value: several times faster
   {
     std::vector<std::array<std::uint32_t, 4>> sorted(order.size()); // key, then file face
-    for(std::size_t i = 0; i < order.size(); ++i)
-    {
+    ::SpectralSeg::internal::parallel_range(0, order.size(), threads, [&](std::size_t i) {
       const std::size_t* key = keys.data() + begin[order[i]];
       sorted[i] = {std::uint32_t(key[0]), std::uint32_t(key[1]), std::uint32_t(key[2]), std::uint32_t(order[i])};
-    }
+    });
     if(faces < (std::size_t(1) << 32))
     {
       // the file face last: no two entries are equal
@@ -163,6 +186,31 @@ Clean_triangles clean_and_triangulate_faces(const Polygon_soup& soup, const std:
       out.duplicate_of[order[i]] =
         out.duplicate_of[order[i - 1]] != Mesh_file_report::no_face ? out.duplicate_of[order[i - 1]] : order[i - 1];
 
+  if(all_triangles)
+  {
+    // each kept face's triangle at its rank among the kept faces
+    std::size_t kept = 0;
+    for(std::size_t p = 0; p < faces; ++p)
+    {
+      if(!valid[p])
+        ++report.invalid_faces;
+      else if(out.duplicate_of[p] != Mesh_file_report::no_face)
+        ++report.duplicate_faces;
+      else
+        out.first_triangle[p] = kept++;
+    }
+    out.triangles.resize(kept);
+    out.input_face_of_triangle.resize(kept);
+    ::SpectralSeg::internal::parallel_range(0, faces, threads, [&](std::size_t p) {
+      const std::size_t t = out.first_triangle[p];
+      if(t == Mesh_file_report::no_face)
+        return;
+      const std::size_t* polygon = polygons.data() + 3 * p;
+      out.triangles[t] = {polygon[0], polygon[1], polygon[2]};
+      out.input_face_of_triangle[t] = p;
+    });
+    return out;
+  }
   std::vector<std::size_t> poly;
   for(std::size_t p = 0; p < faces; ++p)
   {

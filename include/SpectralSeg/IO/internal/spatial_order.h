@@ -119,27 +119,25 @@ SPECTRALSEG_INLINE std::vector<std::size_t> hilbert_order(std::vector<Spatial_or
     });
   }
   std::vector<std::size_t> order(keys.size());
-  for(std::size_t i = 0; i < keys.size(); ++i)
-    order[i] = keys[i].index;
+  ::SpectralSeg::internal::parallel_range(0, keys.size(), threads, [&](std::size_t i) { order[i] = keys[i].index; });
   return order;
 }
 #else
 ;
 #endif
 
-// Reorders `items` along `order` (items[order[0]] first) and returns the new
-// index of each item.
+// Reorders `items` along `order` (items[order[0]] first, `order` a
+// permutation) and returns the new index of each item; on `threads` threads.
 template <typename T>
-std::vector<std::size_t> apply_order(std::vector<T>& items, const std::vector<std::size_t>& order)
+std::vector<std::size_t> apply_order(std::vector<T>& items, const std::vector<std::size_t>& order,
+                                     unsigned threads = 1)
 {
   std::vector<std::size_t> new_index(items.size());
-  std::vector<T> sorted;
-  sorted.reserve(items.size());
-  for(std::size_t i = 0; i < order.size(); ++i)
-  {
+  std::vector<T> sorted(items.size());
+  ::SpectralSeg::internal::parallel_range(0, order.size(), threads, [&](std::size_t i) {
     new_index[order[i]] = i;
-    sorted.push_back(items[order[i]]);
-  }
+    sorted[i] = items[order[i]];
+  });
   items.swap(sorted);
   return new_index;
 }
@@ -159,15 +157,15 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
                                                   unsigned threads = 1)
 {
   std::vector<Spatial_order_key> keys(points.size());
-  for(std::size_t v = 0; v < points.size(); ++v)
+  ::SpectralSeg::internal::parallel_range(0, points.size(), threads, [&](std::size_t v) {
     keys[v] = {{{CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()), CGAL::to_double(points[v].z())}},
                {{v, 0, 0}},
                v};
-  const std::vector<std::size_t> new_vertex = apply_order(points, hilbert_order(keys, threads));
+  });
+  const std::vector<std::size_t> new_vertex = apply_order(points, hilbert_order(keys, threads), threads);
 
   keys.assign(triangles.size(), Spatial_order_key());
-  for(std::size_t t = 0; t < triangles.size(); ++t)
-  {
+  ::SpectralSeg::internal::parallel_range(0, triangles.size(), threads, [&](std::size_t t) {
     std::array<std::size_t, 3>& tri = triangles[t];
     for(std::size_t& v : tri)
       v = new_vertex[v];
@@ -182,8 +180,8 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
     }
     k.tie = tri;
     k.index = t;
-  }
-  return apply_order(triangles, hilbert_order(keys, threads));
+  });
+  return apply_order(triangles, hilbert_order(keys, threads), threads);
 }
 
 } // namespace internal
