@@ -113,6 +113,47 @@ TEST_CASE("polygons are triangulated and mapped back to the file's faces", "[inp
   CHECK_THAT(r.warnings.front(), Catch::Contains("triangulated"));
 }
 
+TEST_CASE("a closed mesh is oriented outward, each piece on its own", "[input]")
+{
+  // two unit cubes of 6 quads, the first listed outward, the second, 3 units
+  // along x, inward, then both inward
+  const std::vector<std::array<int, 4>> quads{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                              {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+  const auto two_cubes = [&](bool first_inward, bool second_inward) {
+    std::string off = "OFF\n16 12 0\n";
+    for(int c = 0; c < 2; ++c)
+      for(int v = 0; v < 8; ++v)
+        off += std::to_string(3 * c + (v == 1 || v == 2 || v == 5 || v == 6)) + " " +
+               std::to_string(int(v == 2 || v == 3 || v == 6 || v == 7)) + " " + std::to_string(int(v >= 4)) + "\n";
+    for(int c = 0; c < 2; ++c)
+      for(std::array<int, 4> q : quads)
+      {
+        if(c == 0 ? first_inward : second_inward)
+          std::reverse(q.begin(), q.end());
+        off += "4";
+        for(int v : q)
+          off += " " + std::to_string(8 * c + v);
+        off += "\n";
+      }
+    return off;
+  };
+  for(const auto& inward : std::vector<std::pair<bool, bool>>{{false, false}, {false, true}, {true, true}})
+  {
+    INFO("first cube inward " << inward.first << ", second " << inward.second);
+    Mesh m;
+    const IO::Mesh_file_report r = IO::read_mesh_file(write_temp("cubes.off", two_cubes(inward.first, inward.second)), m);
+    REQUIRE(r.closed);
+    const Dual_graph g = make_dual_graph(m);
+    REQUIRE(g.number_of_faces() == 24);
+    for(std::size_t f = 0; f < 24; ++f)
+    {
+      const Eigen::Vector3d c = g.geometry().centroids[f];
+      const Eigen::Vector3d centre(c.x() < 2 ? 0.5 : 3.5, 0.5, 0.5);
+      CHECK(g.geometry().normals[f].dot(c - centre) > 0.4);
+    }
+  }
+}
+
 TEST_CASE("duplicate, invalid and degenerate faces are reported", "[input]")
 {
   const std::string text = "OFF\n5 5 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 0\n"

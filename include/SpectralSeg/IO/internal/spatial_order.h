@@ -23,14 +23,15 @@ namespace internal {
 
 // A point to sort, carrying the index it had: CGAL's spatial-sorting traits
 // below compare positions along one axis with ties broken by the other two
-// axes and then by `tie`. The comparisons are a strict total order, so each
-// median split of CGAL's Hilbert sort puts the same keys on each side
-// whatever the order they come in: the sorted sequence depends on the keys
-// only (not on the input order, nor on a shuffle).
+// axes and then by the keys' tie triples (`ties[index]`; without ties, by
+// index). The comparisons are a strict total order, so each median split of
+// CGAL's Hilbert sort puts the same keys on each side whatever the order
+// they come in: the sorted sequence depends on the keys only (not on the
+// input order, nor on a shuffle). The triples stay out of the keys, which
+// the median splits move: 32 bytes a key instead of 56.
 struct Spatial_order_key
 {
   std::array<double, 3> position;
-  std::array<std::size_t, 3> tie;
   std::size_t index;
 };
 
@@ -38,10 +39,14 @@ class Spatial_order_traits
 {
 public:
   typedef Spatial_order_key Point_3;
+  typedef std::array<std::size_t, 3> Tie;
+
+  explicit Spatial_order_traits(const Tie* ties = nullptr) : ties_(ties) {}
 
   template <int axis>
   struct Less
   {
+    const Tie* ties;
     bool operator()(const Spatial_order_key& p, const Spatial_order_key& q) const
     {
       for(int i = 0; i < 3; ++i)
@@ -50,19 +55,23 @@ public:
         if(p.position[c] != q.position[c])
           return p.position[c] < q.position[c];
       }
-      return p.tie < q.tie;
+      return ties != nullptr ? ties[p.index] < ties[q.index] : p.index < q.index;
     }
   };
   typedef Less<0> Less_x_3;
   typedef Less<1> Less_y_3;
   typedef Less<2> Less_z_3;
-  Less_x_3 less_x_3_object() const { return Less_x_3(); }
-  Less_y_3 less_y_3_object() const { return Less_y_3(); }
-  Less_z_3 less_z_3_object() const { return Less_z_3(); }
+  Less_x_3 less_x_3_object() const { return Less_x_3{ties_}; }
+  Less_y_3 less_y_3_object() const { return Less_y_3{ties_}; }
+  Less_z_3 less_z_3_object() const { return Less_z_3{ties_}; }
+
+private:
+  const Tie* ties_;
 };
 
 // The indices of `keys` in the order of a Hilbert curve through their
-// positions (CGAL's median policy: the curve adapts to where the points are).
+// positions (CGAL's median policy: the curve adapts to where the points are),
+// equal positions in the order of `ties[index]` (null: of index).
 // The keys themselves are sorted, not indices into them: the median splits
 // then read memory in sequence instead of jumping through an index array.
 // With several threads the independent splits of the curve's first level
@@ -70,11 +79,12 @@ public:
 // CGAL's parallel Hilbert sort; every split and every octant's sort is the
 // sequential sort's, on the same keys, so the order does not depend on the
 // number of threads.
-SPECTRALSEG_INLINE std::vector<std::size_t> hilbert_order(std::vector<Spatial_order_key>& keys, unsigned threads = 1)
+SPECTRALSEG_INLINE std::vector<std::size_t> hilbert_order(std::vector<Spatial_order_key>& keys, unsigned threads = 1,
+                                                         const Spatial_order_traits::Tie* ties = nullptr)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   typedef CGAL::Hilbert_sort_median_3<Spatial_order_traits, CGAL::Sequential_tag> Sort;
-  const Sort sort{Spatial_order_traits()};
+  const Sort sort{Spatial_order_traits(ties)};
   if(threads < 2 || keys.size() <= 2048)
     sort(keys.begin(), keys.end());
   else
@@ -83,7 +93,7 @@ SPECTRALSEG_INLINE std::vector<std::size_t> hilbert_order(std::vector<Spatial_or
     // axes x = 0, y = 1, z = 2, none reversed
     typedef std::vector<Spatial_order_key>::iterator It;
     typedef Spatial_order_traits T;
-    const T k;
+    const T k(ties);
     using CGAL::internal::hilbert_split;
     using CGAL::internal::Hilbert_cmp_3;
     const It m0 = keys.begin(), m8 = keys.end();
@@ -158,9 +168,7 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
 {
   std::vector<Spatial_order_key> keys(points.size());
   ::SpectralSeg::internal::parallel_range(0, points.size(), threads, [&](std::size_t v) {
-    keys[v] = {{{CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()), CGAL::to_double(points[v].z())}},
-               {{v, 0, 0}},
-               v};
+    keys[v] = {{{CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()), CGAL::to_double(points[v].z())}}, v};
   });
   const std::vector<std::size_t> new_vertex = apply_order(points, hilbert_order(keys, threads), threads);
 
@@ -178,10 +186,10 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
       k.position[1] += CGAL::to_double(points[v].y()) / 3;
       k.position[2] += CGAL::to_double(points[v].z()) / 3;
     }
-    k.tie = tri;
     k.index = t;
   });
-  return apply_order(triangles, hilbert_order(keys, threads), threads);
+  // equal centroids in the order of the triangles' vertices
+  return apply_order(triangles, hilbert_order(keys, threads, triangles.data()), threads);
 }
 
 } // namespace internal
