@@ -172,7 +172,7 @@ std::vector<std::size_t> sort_along_hilbert_curve(std::vector<Point>& points,
   });
   const std::vector<std::size_t> new_vertex = apply_order(points, hilbert_order(keys, threads), threads);
 
-  keys.assign(triangles.size(), Spatial_order_key());
+  keys.resize(triangles.size()); // every key is written below
   ::SpectralSeg::internal::parallel_range(0, triangles.size(), threads, [&](std::size_t t) {
     std::array<std::size_t, 3>& tri = triangles[t];
     for(std::size_t& v : tri)
