@@ -274,7 +274,7 @@ std::vector<Row> read_rows(const std::string& path)
 }
 
 template <typename RayCaster>
-std::vector<double> part_aware(const Options& o, const SpectralSeg::Dual_graph& g, const SpectralSeg::Execution& exec)
+SpectralSeg::Metrics::Metric_values part_aware(const Options& o, const SpectralSeg::Dual_graph& g, const SpectralSeg::Execution& exec)
 {
   SpectralSeg::Metrics::VSI_options vo;
   vo.images.sample_fraction = o.vsi_fraction;
@@ -287,11 +287,12 @@ std::vector<double> part_aware(const Options& o, const SpectralSeg::Dual_graph& 
     vo.reference.smoothing_iterations = std::size_t(o.reference_smoothing);
   const auto n = o.normalization == "max" ? SpectralSeg::Metrics::Normalization::maximum()
                                           : SpectralSeg::Metrics::Normalization::quantile(0.99);
-  return SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma, vo, 0.001, n)(g, exec);
+  return SpectralSeg::Metrics::metric_values(
+    SpectralSeg::Metrics::Part_aware_weight<RayCaster>(o.alpha, o.beta, o.gamma, vo, 0.001, n), g, exec);
 }
 
-// the part-aware weights with the ray caster of the options
-std::vector<double> part_aware_weights(const Options& o, const SpectralSeg::Dual_graph& g,
+// the part-aware weights (and the faces' thickness) with the ray caster of the options
+SpectralSeg::Metrics::Metric_values part_aware_weights(const Options& o, const SpectralSeg::Dual_graph& g,
                                        const SpectralSeg::Execution& exec)
 {
 #ifdef SPECTRALSEG_HAS_EMBREE
@@ -306,8 +307,7 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
                           std::vector<SpectralSeg::K_way_candidate>* candidates = nullptr)
 {
   const SpectralSeg::Execution exec(o.threads);
-  const std::vector<double> w = part_aware_weights(o, g, exec);
-  const SpectralSeg::Weighted_dual_graph wg(g, w);
+  const SpectralSeg::Weighted_dual_graph wg(g, part_aware_weights(o, g, exec));
   SpectralSeg::K_way_options ko = o.thesis ? SpectralSeg::K_way_options::thesis() : SpectralSeg::K_way_options();
   ko.boundary_enhancement = o.graph_cut;
   if(o.mu >= 0.)
@@ -377,8 +377,7 @@ std::vector<int> run_kway(const Options& o, const SpectralSeg::Dual_graph& g, st
 std::vector<int> run_contrast(const Options& o, const SpectralSeg::Dual_graph& g)
 {
   const SpectralSeg::Execution exec(o.threads);
-  const std::vector<double> w = part_aware_weights(o, g, exec);
-  const SpectralSeg::Weighted_dual_graph wg(g, w);
+  const SpectralSeg::Weighted_dual_graph wg(g, part_aware_weights(o, g, exec));
   SpectralSeg::Hybrid_options ho;
   ho.k_way.boundary_enhancement = o.graph_cut;
   ho.k_way.embedding.seed = o.seed;

@@ -74,7 +74,8 @@ int main(int argc, char** argv)
 
   // The metric once, then several segmentations of the same weighted graph.
   const SpectralSeg::Dual_graph graph = SpectralSeg::make_dual_graph(mesh);
-  const SpectralSeg::Weighted_dual_graph weighted(graph, SpectralSeg::Metrics::Part_aware_weight<>()(graph));
+  const SpectralSeg::Weighted_dual_graph weighted(
+    graph, SpectralSeg::Metrics::metric_values(SpectralSeg::Metrics::Part_aware_weight<>(), graph));
   const SpectralSeg::K_way_result ours = SpectralSeg::segment_k_way(weighted, k);
   const SpectralSeg::K_way_result thesis =
     SpectralSeg::segment_k_way(weighted, k, SpectralSeg::K_way_options::thesis());

@@ -639,7 +639,7 @@ py::object k_way_segmentation(const py::object& vertices, const py::object& face
       invalid("k = " + std::to_string(kk) + " is larger than the number of faces (" + std::to_string(n) + ")");
     const SpectralSeg::Metrics::Any_weight w = make_metric(mo);
     o.metric = w.name();
-    const SpectralSeg::Weighted_dual_graph weighted(o.m->graph, w(o.m->graph, exec));
+    const SpectralSeg::Weighted_dual_graph weighted(o.m->graph, SpectralSeg::Metrics::metric_values(w, o.m->graph, exec));
     timer.lap("metric");
     o.r = SpectralSeg::segment_k_way(weighted, kk, ks.options.with_kernel(chosen_kernel(ks.kernel)), exec);
     o.timings = timer.timings;
@@ -818,7 +818,7 @@ py::object automatic(const py::object& vertices, const py::object& faces, const 
       invalid("automatic segmentation needs at least 2 faces");
     const SpectralSeg::Metrics::Any_weight w = make_metric(mo);
     o.metric = w.name();
-    const SpectralSeg::Weighted_dual_graph weighted(graph, w(graph, exec));
+    const SpectralSeg::Weighted_dual_graph weighted(graph, SpectralSeg::Metrics::metric_values(w, graph, exec));
     timer.lap("metric");
     auto run = [&](const auto& kern) {
       typedef std::decay_t<decltype(kern)> K;
@@ -911,7 +911,7 @@ py::object face_distances(const py::object& vertices, const py::object& faces, c
     }
     const SpectralSeg::Metrics::Any_weight w = make_metric(mo);
     exec.report(w.name() + " weights", 0.);
-    const SpectralSeg::Weighted_dual_graph weighted(o.m->graph, w(o.m->graph, exec));
+    const SpectralSeg::Weighted_dual_graph weighted(o.m->graph, SpectralSeg::Metrics::metric_values(w, o.m->graph, exec));
     exec.report(w.name() + " weights", 1.);
     exec.report("dijkstra", 0.);
     o.d = weighted.distances(ids);
@@ -1017,7 +1017,7 @@ py::dict shape_descriptor(const py::object& vertices, const py::object& faces, c
       return SpectralSeg::Retrieval::shape_descriptor(m.graph, SpectralSeg::Retrieval::Euclidean_distance(), options, exec);
     const SpectralSeg::Metrics::Any_weight w = make_metric(mo);
     exec.report(w.name() + " weights", 0.);
-    const SpectralSeg::Weighted_dual_graph weighted(m.graph, w(m.graph, exec));
+    const SpectralSeg::Weighted_dual_graph weighted(m.graph, SpectralSeg::Metrics::metric_values(w, m.graph, exec));
     exec.report(w.name() + " weights", 1.);
     return SpectralSeg::Retrieval::shape_descriptor(weighted, w.name(), options, exec);
   });

@@ -813,6 +813,29 @@ TEST_CASE("contrast merge: the embedding separation orders the merges, the limit
   CHECK(internal::merge_by_contrast(g, w, labels, 1, std::sqrt(0.525 * total / 1.05), 0., sep) == 2);
   CHECK(labels[0] == labels[8]);
   CHECK(labels[8] != labels[16]);
+  // segments 1 and 2 sixteen times as thick as segment 0 (one face of
+  // unknown thickness): the weaker fold 0|1 now bounds a part, its order
+  // is 16^(1/2) = 4 and its contrast 16^(1/4) = 2 times higher, 1|2 goes
+  // first, and with the limit between the folds nothing is merged; unknown
+  // thickness everywhere changes nothing
+  std::vector<double> thickness(24);
+  for(std::size_t f = 0; f < 24; ++f)
+    thickness[f] = thirds[f] == 0 ? 1. : 16.;
+  thickness[20] = std::numeric_limits<double>::quiet_NaN();
+  labels = thirds;
+  CHECK(internal::merge_by_contrast(g, w, labels, 2, 1e6, 0., Refinement::Embedding_separation(), 0., nullptr, 0,
+                                    nullptr, 0., &thickness) == 2);
+  CHECK(labels[0] != labels[8]);
+  CHECK(labels[8] == labels[16]);
+  labels = thirds;
+  CHECK(internal::merge_by_contrast(g, w, labels, 1, std::sqrt(0.525 * total / 1.05), 0.,
+                                    Refinement::Embedding_separation(), 0., nullptr, 0, nullptr, 0., &thickness) == 3);
+  const std::vector<double> unknown(24, std::numeric_limits<double>::quiet_NaN());
+  labels = thirds;
+  CHECK(internal::merge_by_contrast(g, w, labels, 2, 1e6, 0., Refinement::Embedding_separation(), 0., nullptr, 0,
+                                    nullptr, 0., &unknown) == 2);
+  CHECK(labels[0] == labels[8]);
+  CHECK(labels[8] != labels[16]);
   // the history goes on past the limit, in the same order, to one segment,
   // and its hierarchy gives back the answer and every other count
   labels = thirds;

@@ -4,9 +4,12 @@
 #include "test_meshes.h"
 
 #include <SpectralSeg/Dual_graph.h>
+#include <SpectralSeg/Metrics/Any_weight.h>
+#include <SpectralSeg/Metrics/Blend.h>
 #include <SpectralSeg/Metrics/Geodesic_weight.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
 #include <SpectralSeg/Metrics/VSI_weight.h>
+#include <SpectralSeg/Metrics/metric_values.h>
 #include <SpectralSeg/Ray_casting/AABB_ray_caster.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 
@@ -179,6 +182,45 @@ TEST_CASE("VSI weights do not depend on the number of threads", "[vsi][threads]"
   const std::vector<double> w3 = metric(g, Execution(3));
   CHECK(w1 == w2);
   CHECK(w1 == w3);
+}
+
+TEST_CASE("metric_values: the faces' thickness from the metrics that measure it", "[vsi][thickness]")
+{
+  const Mesh m = test_meshes::to_mesh<Mesh>(test_meshes::sphere(2., 24, 48));
+  const Dual_graph g = make_dual_graph(m);
+  const Metrics::Part_aware_weight<> part_aware;
+  const Metrics::Metric_values v = Metrics::metric_values(part_aware, g, Execution(2));
+  // the same weights as the plain call, and every face of a sphere of
+  // radius 2 about one diameter thick
+  CHECK(v.weights == part_aware(g, Execution(2)));
+  REQUIRE(v.face_thickness.size() == g.number_of_faces());
+  for(double t : v.face_thickness)
+    CHECK(t == Approx(4.).epsilon(0.05));
+  // passed on by Any_weight, and by a Blend from its VSI component
+  const Metrics::Metric_values any = Metrics::metric_values(Metrics::Any_weight(part_aware), g);
+  CHECK(any.weights == v.weights);
+  CHECK(any.face_thickness == v.face_thickness);
+  const Metrics::Metric_values vsi = Metrics::metric_values(Metrics::VSI_weight<>(), g);
+  REQUIRE(vsi.face_thickness.size() == g.number_of_faces());
+  const auto blend = Metrics::make_blend(Metrics::Geodesic_weight(), 0.5, Metrics::VSI_weight<>(), 0.5);
+  CHECK(Metrics::metric_values(blend, g).face_thickness == vsi.face_thickness);
+  // none from a metric that casts no ray, nor from a Blend that does not
+  // compute its VSI component
+  CHECK(Metrics::metric_values(Metrics::Geodesic_weight(), g).face_thickness.empty());
+  CHECK(Metrics::metric_values(Metrics::Any_weight(Metrics::Geodesic_weight()), g).face_thickness.empty());
+  const auto no_vsi = Metrics::make_blend(Metrics::Geodesic_weight(), 1., Metrics::VSI_weight<>(), 0.);
+  CHECK(Metrics::metric_values(no_vsi, g).face_thickness.empty());
+  // the weighted graph keeps it, and refuses thickness that does not fit
+  const Weighted_dual_graph weighted(g, v);
+  CHECK(weighted.face_thickness() == v.face_thickness);
+  Metrics::Metric_values bad = v;
+  bad.face_thickness.pop_back();
+  CHECK_THROWS_AS(Weighted_dual_graph(g, bad), Invalid_input);
+  bad = v;
+  bad.face_thickness[3] = -1.;
+  CHECK_THROWS_AS(Weighted_dual_graph(g, bad), Invalid_input);
+  bad.face_thickness[3] = std::numeric_limits<double>::quiet_NaN();
+  CHECK(Weighted_dual_graph(g, bad).face_thickness().size() == g.number_of_faces());
 }
 
 TEST_CASE("open meshes: rays that escape are ignored, no NaN reaches a weight", "[vsi][open]")

@@ -36,6 +36,17 @@
 /// `SpectralSeg::Operation_cancelled` when the user cancels, and the model
 /// should let that exception through.
 ///
+/// A model may also measure the shape's thickness at each face: it then
+/// has a second call operator, `operator()(graph, exec, face_thickness)`,
+/// which returns the same weights and, when `face_thickness` is not null,
+/// stores there one value per face (the diameter of the largest ball
+/// inside the shape touching the face, `NaN` where unknown) or leaves it
+/// empty. `SpectralSeg::Metrics::metric_values()` calls it when it exists;
+/// the contrast merge of `SpectralSeg::segment_hybrid()` compares the
+/// segments' thickness (`SpectralSeg::Weighted_dual_graph::face_thickness()`).
+/// `SpectralSeg::Metrics::VSI_weight`, `SpectralSeg::Metrics::Part_aware_weight`,
+/// `SpectralSeg::Metrics::Blend` and `SpectralSeg::Metrics::Any_weight` have it.
+///
 /// The shortest way to write a model is
 /// `SpectralSeg::Metrics::make_per_edge_weight()`, which turns a function of
 /// one dual edge into a policy that runs in parallel; a class with the two

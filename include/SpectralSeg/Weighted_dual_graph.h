@@ -7,7 +7,9 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
+#include <SpectralSeg/Metrics/metric_values.h>
 #include <SpectralSeg/Metrics/normalize_weights.h>
+#include <SpectralSeg/exceptions.h>
 #include <SpectralSeg/internal/bucket_shortest_paths.h>
 #include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
@@ -64,14 +66,30 @@ public:
   /// \throws Invalid_input if the weights are not valid
   Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights);
 
+  /// A metric's weights with the faces' thickness where the metric reports
+  /// it (`Metrics::metric_values()`); the contrast merge of
+  /// `segment_hybrid()` reads the thickness.
+  /// \param graph the dual graph
+  /// \pre `graph` outlives this object
+  /// \param values one finite, non-negative weight per dual edge, and no
+  ///        thickness or one per face, each positive or `NaN` (unknown)
+  /// 	hrows Invalid_input if the weights or the thickness are not valid
+  Weighted_dual_graph(const Dual_graph& graph, Metrics::Metric_values values);
+
   /// a temporary graph would dangle: keep the graph alive while this object is used
   Weighted_dual_graph(Dual_graph&&, const std::vector<double>&) = delete;
+  /// a temporary graph would dangle: keep the graph alive while this object is used
+  Weighted_dual_graph(Dual_graph&&, Metrics::Metric_values) = delete;
 
   /// the dual graph
   const Dual_graph& graph() const { return graph_; }
 
   /// the weight of each dual edge, indexed like `Dual_graph::edges()`
   const std::vector<double>& weights() const { return weights_; }
+
+  /// empty, or the thickness of the shape at each face (`NaN` where
+  /// unknown), as reported by the metric (`Metrics::Metric_values`)
+  const std::vector<double>& face_thickness() const { return face_thickness_; }
 
   /// distances from one source face
   std::vector<double> distances(size_type source) const
@@ -139,6 +157,7 @@ private:
 
   const Dual_graph& graph_;
   std::vector<double> weights_;
+  std::vector<double> face_thickness_;
   std::vector<double> arc_weights_;
   double bucket_width_ = 1.; // of bucket_shortest_paths(): the mean weight
 };
@@ -227,6 +246,21 @@ SPECTRALSEG_INLINE Weighted_dual_graph::Weighted_dual_graph(const Dual_graph& gr
     sum += w;
   if(sum > 0. && std::isfinite(sum))
     bucket_width_ = sum / double(weights.size());
+}
+
+SPECTRALSEG_INLINE Weighted_dual_graph::Weighted_dual_graph(const Dual_graph& graph, Metrics::Metric_values values)
+  : Weighted_dual_graph(graph, values.weights)
+{
+  if(!values.face_thickness.empty())
+  {
+    if(values.face_thickness.size() != graph.number_of_faces())
+      throw Invalid_input("face thickness: " + std::to_string(values.face_thickness.size()) + " values for " +
+                          std::to_string(graph.number_of_faces()) + " faces");
+    for(double t : values.face_thickness)
+      if(!(std::isnan(t) || (t > 0. && std::isfinite(t))))
+        throw Invalid_input("face thickness: a value is neither positive and finite nor NaN (unknown)");
+  }
+  face_thickness_ = std::move(values.face_thickness);
 }
 #endif
 

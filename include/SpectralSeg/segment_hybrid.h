@@ -146,7 +146,13 @@ typedef Basic_hybrid_options<Kernels::Exponential_kernel> Hybrid_options;
 ///    volumetric term of the metric sees), the second multiplied by the
 ///    boundary's neck ratio (`options.neck_scale`: parts are protrusions,
 ///    which meet the rest along a short loop for their area, while K-means
-///    also slices bodies along long ones). A boundary is kept only when
+///    also slices bodies along long ones) and, when the graph has the faces'
+///    thickness (`Weighted_dual_graph::face_thickness()`, which the
+///    part-aware metric reports through `Metrics::metric_values()`), by the
+///    square root of the ratio of the two segments' area-weighted mean
+///    thicknesses, the thicker over the thinner (a tail fin, a leg or a
+///    head that meets a thicker body without a crease is a part; the
+///    ratio is free of units). A boundary is kept only when
 ///    both say it separates parts, so K-means' cuts through smooth bodies and
 ///    through creased but uniform regions are both undone. The ratios are
 ///    relative to the mesh or free of units, so the limit does not depend

@@ -205,8 +205,7 @@ std::vector<int> run_k_way_methods(const Segment_options& o, std::size_t k, cons
                           o.samples, SpectralSeg::Embedding::Embedding_options().exact_face_limit);
   const auto started = std::chrono::steady_clock::now();
   const SpectralSeg::Metrics::Any_weight metric = make_metric(o.metric);
-  const std::vector<double> weights = metric(graph, exec);
-  const SpectralSeg::Weighted_dual_graph weighted(graph, weights);
+  const SpectralSeg::Weighted_dual_graph weighted(graph, SpectralSeg::Metrics::metric_values(metric, graph, exec));
   timings.emplace_back("metric", std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
   metric_name = metric.name();
 

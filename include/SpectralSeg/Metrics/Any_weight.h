@@ -7,10 +7,12 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
+#include <SpectralSeg/Metrics/metric_values.h>
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace SpectralSeg {
@@ -38,7 +40,15 @@ public:
   /// the wrapped metric's weights
   std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution()) const
   {
-    return holder_->weights(graph, exec);
+    return holder_->weights(graph, exec, nullptr);
+  }
+
+  /// the wrapped metric's weights; with `face_thickness`, the faces'
+  /// thickness if the wrapped metric reports it (see `Metrics::metric_values()`)
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec,
+                                 std::vector<double>* face_thickness) const
+  {
+    return holder_->weights(graph, exec, face_thickness);
   }
 
 private:
@@ -46,14 +56,21 @@ private:
   {
     virtual ~Base() = default;
     virtual std::string name() const = 0;
-    virtual std::vector<double> weights(const Dual_graph&, const Execution&) const = 0;
+    virtual std::vector<double> weights(const Dual_graph&, const Execution&, std::vector<double>*) const = 0;
   };
   template <typename M>
   struct Holder : Base
   {
     explicit Holder(M m) : metric(std::move(m)) {}
     std::string name() const override { return metric.name(); }
-    std::vector<double> weights(const Dual_graph& g, const Execution& e) const override { return metric(g, e); }
+    std::vector<double> weights(const Dual_graph& g, const Execution& e, std::vector<double>* t) const override
+    {
+      if(!t)
+        return metric(g, e);
+      Metric_values v = metric_values(metric, g, e);
+      *t = std::move(v.face_thickness);
+      return std::move(v.weights);
+    }
     M metric;
   };
   std::shared_ptr<const Base> holder_;

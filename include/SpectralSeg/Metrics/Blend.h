@@ -7,6 +7,7 @@
 
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
+#include <SpectralSeg/Metrics/metric_values.h>
 #include <SpectralSeg/Metrics/normalize_weights.h>
 #include <SpectralSeg/exceptions.h>
 
@@ -80,26 +81,46 @@ public:
   /// one weight per dual edge of `graph`
   std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution()) const
   {
+    return (*this)(graph, exec, nullptr);
+  }
+
+  /// one weight per dual edge of `graph`; with `face_thickness`, the faces'
+  /// thickness reported by the first component computed that reports it
+  /// (left empty if none does; see `Metrics::metric_values()`)
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec,
+                                 std::vector<double>* face_thickness) const
+  {
     std::vector<double> w(graph.number_of_edges(), 0.);
-    accumulate(graph, exec, w, std::index_sequence_for<Components...>());
+    if(face_thickness)
+      face_thickness->clear();
+    accumulate(graph, exec, w, face_thickness, std::index_sequence_for<Components...>());
     return w;
   }
 
 private:
   template <std::size_t... I>
   void accumulate(const Dual_graph& graph, const Execution& exec, std::vector<double>& w,
-                  std::index_sequence<I...>) const
+                  std::vector<double>* face_thickness, std::index_sequence<I...>) const
   {
-    (add_component(std::get<I>(components_), coefficients_[I], normalization_, graph, exec, w), ...);
+    (add_component(std::get<I>(components_), coefficients_[I], normalization_, graph, exec, w, face_thickness),
+     ...);
   }
 
   template <typename C>
   static void add_component(const C& c, double coefficient, const Normalization& normalization,
-                            const Dual_graph& graph, const Execution& exec, std::vector<double>& w)
+                            const Dual_graph& graph, const Execution& exec, std::vector<double>& w,
+                            std::vector<double>* face_thickness)
   {
     if(coefficient == 0.)
       return;
-    std::vector<double> cw = c(graph, exec);
+    Metric_values v;
+    if(face_thickness && face_thickness->empty())
+      v = metric_values(c, graph, exec);
+    else
+      v.weights = c(graph, exec);
+    if(!v.face_thickness.empty())
+      *face_thickness = std::move(v.face_thickness);
+    std::vector<double>& cw = v.weights;
     check_weights(graph, cw, c.name());
     normalize_weights(cw, normalization);
     for(std::size_t e = 0; e < w.size(); ++e)

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace SpectralSeg {
@@ -164,10 +165,22 @@ public:
   /// one weight per dual edge of `graph`
   std::vector<double> operator()(const Dual_graph& graph, const Execution& exec = Execution()) const
   {
+    return (*this)(graph, exec, nullptr);
+  }
+
+  /// one weight per dual edge of `graph`; with `face_thickness`, the
+  /// diameter of each face's inscribed ball goes there
+  /// (`VSI::Reference_points::diameters`, see `Metrics::metric_values()`)
+  std::vector<double> operator()(const Dual_graph& graph, const Execution& exec,
+                                 std::vector<double>* face_thickness) const
+  {
     exec.report("ray casting setup", 0.);
     const RayCaster caster(graph.geometry());
     exec.report("ray casting setup", 1.);
-    return compute_vsi(graph, caster, options_, exec).weights;
+    VSI_result r = compute_vsi(graph, caster, options_, exec);
+    if(face_thickness)
+      *face_thickness = std::move(r.reference_points.diameters);
+    return std::move(r.weights);
   }
 
 private:

@@ -140,12 +140,19 @@ struct Merge_history
 // other boundary, whatever their cost and the limit, and among them the
 // one whose smaller segment is largest goes first (a seam kept wrongly
 // between two large pieces splits the most pairs of faces).
+// With `face_thickness` (one value per face, NaN where unknown) and a
+// positive `thickness_exponent` e, a pair whose segments' area-weighted mean
+// thicknesses differ by the ratio t (the thicker over the thinner; faces of
+// unknown thickness left out) has its cost's order multiplied by t^e and
+// its strength by t^(e/2) (the contrast merge's metric contrast times t^e).
 template <typename Cost>
 std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                       std::vector<int>& labels, std::size_t min_segments, double min_area_fraction,
                                       double limit, const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr,
                                       Merge_history* history = nullptr,
-                                      const std::vector<double>* concave_angles = nullptr, double flat_angle = 0.)
+                                      const std::vector<double>* concave_angles = nullptr, double flat_angle = 0.,
+                                      const std::vector<double>* face_thickness = nullptr,
+                                      double thickness_exponent = 0.)
 {
   const std::size_t n = graph.number_of_faces();
   // dense labels 0 .. s-1 in order of first face
@@ -218,6 +225,16 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
       m.area += areas[f];
     }
   }
+  // each segment's area-weighted sum of thickness and the area it covers
+  const bool thick = face_thickness && thickness_exponent > 0. && face_thickness->size() == n;
+  std::vector<double> thickness(thick ? s : 0, 0.), thickness_area(thick ? s : 0, 0.);
+  if(thick)
+    for(std::size_t f = 0; f < n; ++f)
+      if(!std::isnan((*face_thickness)[f]))
+      {
+        thickness[std::size_t(labels[f])] += graph.geometry().areas[f] * (*face_thickness)[f];
+        thickness_area[std::size_t(labels[f])] += graph.geometry().areas[f];
+      }
   std::vector<std::size_t> answer; // `target` where the answer ends
   bool past = false;               // past the answer: no limit, no count
   for(std::size_t count = s; count > 1; --count)
@@ -241,10 +258,17 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
         if(b < a || nb.second.length <= 0.)
           continue;
         const double smaller = std::min(area[a], area[b]);
-        const Merge_cost c = cost(nb.second, smaller / total_area,
-                                  coordinates ? embedding_separation(moments[a], moments[b])
-                                              : std::numeric_limits<double>::infinity(),
-                                  std::max(0., perimeter[a] + perimeter[b] - 2. * nb.second.length));
+        Merge_cost c = cost(nb.second, smaller / total_area,
+                            coordinates ? embedding_separation(moments[a], moments[b])
+                                        : std::numeric_limits<double>::infinity(),
+                            std::max(0., perimeter[a] + perimeter[b] - 2. * nb.second.length));
+        if(thick && thickness[a] > 0. && thickness[b] > 0.)
+        {
+          const double ta = thickness[a] / thickness_area[a], tb = thickness[b] / thickness_area[b];
+          const double t = std::pow(std::max(ta, tb) / std::min(ta, tb), thickness_exponent);
+          c.order *= t;
+          c.strength *= std::sqrt(t);
+        }
         int rank = 2;
         double order = c.order;
         if(smaller < small)
@@ -300,6 +324,11 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
     perimeter[wa] = std::max(0., perimeter[wa] + perimeter[wb] - 2. * boundary[wb][wa].length);
     boundary[wb].clear();
     area[wa] += area[wb];
+    if(thick)
+    {
+      thickness[wa] += thickness[wb];
+      thickness_area[wa] += thickness_area[wb];
+    }
     if(coordinates)
       moments[wa].add(moments[wb]);
     for(std::size_t& t : target)

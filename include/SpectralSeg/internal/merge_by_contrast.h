@@ -32,6 +32,11 @@ namespace internal {
 // The neck ratio's scale of the contrast merge (Basic_hybrid_options::neck_scale).
 constexpr double default_neck_scale = 0.4;
 
+// The exponent of the contrast merge's thickness ratio: the metric contrast
+// of a boundary is multiplied by the square root of the ratio of its two
+// segments' mean thicknesses (Weighted_dual_graph::face_thickness()).
+constexpr double thickness_exponent = 0.5;
+
 // The reference resolution of the contrast merge's concave contrast
 // (Basic_hybrid_options::reference_faces).
 constexpr std::size_t default_reference_faces = 50000;
@@ -64,13 +69,18 @@ SPECTRALSEG_INLINE double separation_exponent(double share)
 // `reference_faces` (0: the mesh's own resolution), or `given_angles` when
 // not null (those angles, made once for several merges). Boundaries whose
 // mean concave angle is below `flat_angle` (radians) are flat seams
-// (Refinement::internal::merge_cheapest_boundaries()).
+// (Refinement::internal::merge_cheapest_boundaries()). With
+// `face_thickness` (one value per face, NaN where unknown), the metric
+// contrast is also multiplied by the square root of the ratio of the two
+// segments' mean thicknesses, the thicker over the thinner: a fin, a tail
+// or a leg that meets a thicker body without a crease is a part.
 SPECTRALSEG_INLINE std::size_t merge_by_contrast(
     const Dual_graph& graph, const std::vector<double>& weights, std::vector<int>& labels, std::size_t min_segments,
     double limit, double min_area_fraction,
     const Refinement::Embedding_separation& separation = Refinement::Embedding_separation(), double neck_scale = 0.,
     Refinement::internal::Merge_history* history = nullptr, std::size_t reference_faces = 0,
-    const std::vector<double>* given_angles = nullptr, double flat_angle = 0.)
+    const std::vector<double>* given_angles = nullptr, double flat_angle = 0.,
+    const std::vector<double>* face_thickness = nullptr)
 #if SPECTRALSEG_DEFINE_FUNCTIONS
 {
   // the concave angles at the reference resolution (the mesh's own up to it)
@@ -112,7 +122,7 @@ SPECTRALSEG_INLINE std::size_t merge_by_contrast(
     },
     separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0 ? separation.coordinates
                                                                                             : nullptr,
-    history, &angles, flat_angle);
+    history, &angles, flat_angle, face_thickness, thickness_exponent);
 }
 #else
 ;
@@ -206,7 +216,8 @@ std::size_t merge_labels_by_contrast(const Weighted_dual_graph& graph,
   Refinement::make_segments_connected(graph.graph(), labels);
   return merge_by_contrast(graph.graph(), graph.weights(), labels, min_segments, limit, k_way.merge_min_area_fraction,
                            merge_separation(graph, k_way, coordinates), neck_scale, &history, reference_faces,
-                           &shared.angles, flat_seam_radians(k_way));
+                           &shared.angles, flat_seam_radians(k_way),
+                           graph.face_thickness().empty() ? nullptr : &graph.face_thickness());
 }
 
 // merge_labels_by_contrast() on `r.labels`, the K-means clusters of

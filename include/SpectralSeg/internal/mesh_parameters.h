@@ -9,6 +9,7 @@
 #include <SpectralSeg/Dual_graph.h>
 #include <SpectralSeg/Execution.h>
 #include <SpectralSeg/Metrics/Part_aware_weight.h>
+#include <SpectralSeg/Metrics/metric_values.h>
 #include <SpectralSeg/Metrics/normalize_weights.h>
 #include <SpectralSeg/Weighted_dual_graph.h>
 #include <SpectralSeg/internal/execution_from.h>
@@ -33,6 +34,18 @@ std::vector<double> metric_weights(const Metric& metric, const Dual_graph& graph
   return w;
 }
 
+// metric_weights() with the faces' thickness where the metric reports it
+template <typename Metric>
+Metrics::Metric_values metric_weights_and_thickness(const Metric& metric, const Dual_graph& graph,
+                                                    const Execution& exec)
+{
+  exec.report(metric.name() + " weights", 0.);
+  Metrics::Metric_values v = Metrics::metric_values(metric, graph, exec);
+  Metrics::check_weights(graph, v.weights, metric.name());
+  exec.report(metric.name() + " weights", 1.);
+  return v;
+}
+
 template <typename NamedParameters>
 auto metric_from(const NamedParameters& np)
 {
@@ -48,7 +61,7 @@ struct Weighted_mesh_graph
   template <typename TriangleMesh, typename NamedParameters>
   Weighted_mesh_graph(const TriangleMesh& tm, const NamedParameters& np)
     : exec(execution_from(np)), graph(make_dual_graph(tm, np)),
-      weighted(graph, metric_weights(metric_from(np), graph, exec))
+      weighted(graph, metric_weights_and_thickness(metric_from(np), graph, exec))
   {}
   Execution exec;
   Dual_graph graph;
