@@ -24,17 +24,8 @@ namespace internal {
 
 struct No_nearest_source_map {};
 
-template <typename Metric>
-std::vector<double> metric_weights(const Metric& metric, const Dual_graph& graph, const Execution& exec)
-{
-  exec.report(metric.name() + " weights", 0.);
-  std::vector<double> w = metric(graph, exec);
-  Metrics::check_weights(graph, w, metric.name());
-  exec.report(metric.name() + " weights", 1.);
-  return w;
-}
-
-// metric_weights() with the faces' thickness where the metric reports it
+// The metric's weights, checked, with the faces' thickness where the
+// metric reports it (Metrics::metric_values())
 template <typename Metric>
 Metrics::Metric_values metric_weights_and_thickness(const Metric& metric, const Dual_graph& graph,
                                                     const Execution& exec)
@@ -44,6 +35,12 @@ Metrics::Metric_values metric_weights_and_thickness(const Metric& metric, const 
   Metrics::check_weights(graph, v.weights, metric.name());
   exec.report(metric.name() + " weights", 1.);
   return v;
+}
+
+template <typename Metric>
+std::vector<double> metric_weights(const Metric& metric, const Dual_graph& graph, const Execution& exec)
+{
+  return metric_weights_and_thickness(metric, graph, exec).weights;
 }
 
 template <typename NamedParameters>
