@@ -73,7 +73,7 @@ public:
   /// \pre `graph` outlives this object
   /// \param values one finite, non-negative weight per dual edge, and no
   ///        thickness or one per face, each positive or `NaN` (unknown)
-  /// 	hrows Invalid_input if the weights or the thickness are not valid
+  /// \throws Invalid_input if the weights or the thickness are not valid
   Weighted_dual_graph(const Dual_graph& graph, Metrics::Metric_values values);
 
   /// a temporary graph would dangle: keep the graph alive while this object is used
