@@ -890,7 +890,7 @@ TEST_CASE("merge: flat seams go first, the one between the largest segments firs
   for(std::size_t f = 0; f < 12; ++f)
     parts[f] = f < 2 ? 0 : f < 7 ? 1 : 2;
   // a cost that takes the seam around the smaller segment first
-  const auto smaller_first = [](const Refinement::internal::Segment_boundary&, double smaller, double, double) {
+  const auto smaller_first = [](const Refinement::internal::Segment_boundary&, double smaller, double, double, double) {
     return Refinement::internal::Merge_cost{smaller, smaller};
   };
   const double half_degree = 0.5 * 3.14159265358979323846 / 180.;
@@ -919,7 +919,7 @@ TEST_CASE("merge: flat seams go first, the one between the largest segments firs
   labels = parts;
   CHECK(Refinement::internal::merge_cheapest_boundaries(
           g, {}, labels, 2, 0., std::numeric_limits<double>::infinity(),
-          [](const Refinement::internal::Segment_boundary&, double smaller, double, double) {
+          [](const Refinement::internal::Segment_boundary&, double smaller, double, double, double) {
             return Refinement::internal::Merge_cost{1. - smaller, 1. - smaller}; // the largest pair first
           },
           nullptr, nullptr, &folded, half_degree) == 2);
@@ -950,7 +950,7 @@ TEST_CASE("merge: the boundary of each pair with the other segments", "[merge]")
   std::vector<double> seen; // per pass, per pair: the first pass sees 0|1 and 1|2, the second 01|2
   Refinement::internal::merge_cheapest_boundaries(
     g, {}, labels, 1, 0., std::numeric_limits<double>::infinity(),
-    [&](const Refinement::internal::Segment_boundary& b, double, double, double outer) {
+    [&](const Refinement::internal::Segment_boundary& b, double, double, double outer, double) {
       CHECK(b.length == Approx(1.));
       seen.push_back(outer);
       return Refinement::internal::Merge_cost{double(seen.size()), 0.};

@@ -64,7 +64,7 @@ public:
   /// \pre `graph` outlives this object
   /// \param weights one finite, non-negative weight per dual edge
   /// \throws Invalid_input if the weights are not valid
-  Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights);
+  Weighted_dual_graph(const Dual_graph& graph, std::vector<double> weights);
 
   /// A metric's weights with the faces' thickness where the metric reports
   /// it (`Metrics::metric_values()`); the contrast merge of
@@ -77,7 +77,7 @@ public:
   Weighted_dual_graph(const Dual_graph& graph, Metrics::Metric_values values);
 
   /// a temporary graph would dangle: keep the graph alive while this object is used
-  Weighted_dual_graph(Dual_graph&&, const std::vector<double>&) = delete;
+  Weighted_dual_graph(Dual_graph&&, std::vector<double>) = delete;
   /// a temporary graph would dangle: keep the graph alive while this object is used
   Weighted_dual_graph(Dual_graph&&, Metrics::Metric_values) = delete;
 
@@ -234,22 +234,22 @@ SPECTRALSEG_INLINE void Weighted_dual_graph::run(const std::vector<size_type>& s
   }
 }
 
-SPECTRALSEG_INLINE Weighted_dual_graph::Weighted_dual_graph(const Dual_graph& graph, const std::vector<double>& weights)
-  : graph_(graph), weights_(weights), arc_weights_(num_edges(graph.csr()))
+SPECTRALSEG_INLINE Weighted_dual_graph::Weighted_dual_graph(const Dual_graph& graph, std::vector<double> weights)
+  : graph_(graph), weights_(std::move(weights)), arc_weights_(num_edges(graph.csr()))
 {
-  Metrics::check_weights(graph, weights);
+  Metrics::check_weights(graph, weights_);
   const Dual_graph::Csr& g = graph.csr();
   for(auto e : boost::make_iterator_range(boost::edges(g)))
-    arc_weights_[get(boost::edge_index, g, e)] = weights[g[e].dual_edge];
+    arc_weights_[get(boost::edge_index, g, e)] = weights_[g[e].dual_edge];
   double sum = 0.;
-  for(double w : weights)
+  for(double w : weights_)
     sum += w;
   if(sum > 0. && std::isfinite(sum))
-    bucket_width_ = sum / double(weights.size());
+    bucket_width_ = sum / double(weights_.size());
 }
 
 SPECTRALSEG_INLINE Weighted_dual_graph::Weighted_dual_graph(const Dual_graph& graph, Metrics::Metric_values values)
-  : Weighted_dual_graph(graph, values.weights)
+  : Weighted_dual_graph(graph, std::move(values.weights))
 {
   if(!values.face_thickness.empty())
   {

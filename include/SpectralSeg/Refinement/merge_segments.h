@@ -121,7 +121,7 @@ struct Merge_history
 // Merges adjacent segments, cheapest boundary first: segments under
 // `min_area_fraction` of the area first (smallest first, whatever their
 // boundary), then the pair with the lowest `cost(boundary, smaller,
-// separation, outer).order` among those whose `.strength` is below `limit`,
+// separation, outer, thicker).order` among those whose `.strength` is below `limit`,
 // where `smaller` is the area of the pair's smaller segment over the mesh's
 // area, `separation` the pair's embedding_separation() in `coordinates` (one
 // row per face; infinite when `coordinates` is null) and `outer` the length
@@ -140,19 +140,16 @@ struct Merge_history
 // other boundary, whatever their cost and the limit, and among them the
 // one whose smaller segment is largest goes first (a seam kept wrongly
 // between two large pieces splits the most pairs of faces).
-// With `face_thickness` (one value per face, NaN where unknown) and a
-// positive `thickness_exponent` e, a pair whose segments' area-weighted mean
-// thicknesses differ by the ratio t (the thicker over the thinner; faces of
-// unknown thickness left out) has its cost's order multiplied by t^e and
-// its strength by t^(e/2) (the contrast merge's metric contrast times t^e).
+// `thicker` (the last argument) is the ratio of the pair's area-weighted mean
+// thicknesses, the thicker over the thinner, from `face_thickness` (one
+// value per face, NaN where unknown, left out); 1 without it.
 template <typename Cost>
 std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector<double>& weights,
                                       std::vector<int>& labels, std::size_t min_segments, double min_area_fraction,
                                       double limit, const Cost& cost, const Eigen::MatrixXd* coordinates = nullptr,
                                       Merge_history* history = nullptr,
                                       const std::vector<double>* concave_angles = nullptr, double flat_angle = 0.,
-                                      const std::vector<double>* face_thickness = nullptr,
-                                      double thickness_exponent = 0.)
+                                      const std::vector<double>* face_thickness = nullptr)
 {
   const std::size_t n = graph.number_of_faces();
   // dense labels 0 .. s-1 in order of first face
@@ -226,7 +223,7 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
     }
   }
   // each segment's area-weighted sum of thickness and the area it covers
-  const bool thick = face_thickness && thickness_exponent > 0. && face_thickness->size() == n;
+  const bool thick = face_thickness && face_thickness->size() == n;
   std::vector<double> thickness(thick ? s : 0, 0.), thickness_area(thick ? s : 0, 0.);
   if(thick)
     for(std::size_t f = 0; f < n; ++f)
@@ -258,17 +255,16 @@ std::size_t merge_cheapest_boundaries(const Dual_graph& graph, const std::vector
         if(b < a || nb.second.length <= 0.)
           continue;
         const double smaller = std::min(area[a], area[b]);
-        Merge_cost c = cost(nb.second, smaller / total_area,
-                            coordinates ? embedding_separation(moments[a], moments[b])
-                                        : std::numeric_limits<double>::infinity(),
-                            std::max(0., perimeter[a] + perimeter[b] - 2. * nb.second.length));
+        double ratio = 1.;
         if(thick && thickness[a] > 0. && thickness[b] > 0.)
         {
           const double ta = thickness[a] / thickness_area[a], tb = thickness[b] / thickness_area[b];
-          const double t = std::pow(std::max(ta, tb) / std::min(ta, tb), thickness_exponent);
-          c.order *= t;
-          c.strength *= std::sqrt(t);
+          ratio = std::max(ta, tb) / std::min(ta, tb);
         }
+        const Merge_cost c = cost(nb.second, smaller / total_area,
+                                  coordinates ? embedding_separation(moments[a], moments[b])
+                                              : std::numeric_limits<double>::infinity(),
+                                  std::max(0., perimeter[a] + perimeter[b] - 2. * nb.second.length), ratio);
         int rank = 2;
         double order = c.order;
         if(smaller < small)
@@ -355,7 +351,7 @@ SPECTRALSEG_INLINE std::size_t merge_weakest(const Dual_graph& graph, const std:
   const bool separate = separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0;
   return merge_cheapest_boundaries(
     graph, weights, labels, k, min_area_fraction, strength_limit,
-    [size_exponent, &separation](const Segment_boundary& b, double smaller, double r, double) {
+    [size_exponent, &separation](const Segment_boundary& b, double smaller, double r, double, double) {
       const double mean = b.weight / b.length;
       double c = size_exponent > 0. ? mean * std::pow(smaller, size_exponent) : mean;
       if(r < separation.scale) // r is infinite without coordinates

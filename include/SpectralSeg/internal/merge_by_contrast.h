@@ -105,7 +105,7 @@ SPECTRALSEG_INLINE std::size_t merge_by_contrast(
   // boundaries are weak
   return Refinement::internal::merge_cheapest_boundaries(
     graph, weights, labels, min_segments, min_area_fraction, limit,
-    [&](const Refinement::internal::Segment_boundary& x, double smaller, double r, double outer) {
+    [&](const Refinement::internal::Segment_boundary& x, double smaller, double r, double outer, double thicker) {
       const double c = mean_concave > 0. ? x.concave / x.length / mean_concave : 0.;
       double m = mean_metric > 0. ? x.weight / x.length / mean_metric : 0.;
       if(neck_scale > 0.) // the neck ratio: large around a limb, small across a slice of a body
@@ -115,6 +115,8 @@ SPECTRALSEG_INLINE std::size_t merge_by_contrast(
       // head cut into face and back, a cup's body lengthwise)
       if(neck_scale > 0. && outer > 0. && outer < x.length)
         m *= (outer / x.length) * (outer / x.length);
+      // the thickness ratio: a thin part meets a thick one
+      m *= std::pow(thicker, thickness_exponent);
       // the order, not the limit, follows the separation (r is infinite
       // without coordinates)
       const double order = r < separation.scale ? c * m * std::pow(r / separation.scale, separation.exponent) : c * m;
@@ -122,7 +124,7 @@ SPECTRALSEG_INLINE std::size_t merge_by_contrast(
     },
     separation.coordinates && separation.exponent > 0. && separation.coordinates->cols() > 0 ? separation.coordinates
                                                                                             : nullptr,
-    history, &angles, flat_angle, face_thickness, thickness_exponent);
+    history, &angles, flat_angle, face_thickness);
 }
 #else
 ;
