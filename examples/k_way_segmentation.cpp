@@ -25,6 +25,8 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -143,5 +145,12 @@ int main(int argc, char** argv)
   automatic_options.max_k = 12;
   const SpectralSeg::K_way_result automatic = SpectralSeg::segment_k_way_automatic(weighted, automatic_options);
   std::cout << "automatic: " << automatic.number_of_segments << " segments" << std::endl;
+
+  // The part-aware metric also measured the shape's thickness at each face
+  // (Metrics::vsi_face_thickness()): the contrast merge of segment_hybrid()
+  // keeps a boundary between a thin segment and a thick one.
+  std::vector<double> thickness = weighted.face_thickness();
+  std::nth_element(thickness.begin(), thickness.begin() + std::ptrdiff_t(thickness.size() / 2), thickness.end());
+  std::cout << "median thickness of the shape at a face: " << thickness[thickness.size() / 2] << std::endl;
   return 0;
 }

@@ -18,6 +18,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -221,6 +222,69 @@ TEST_CASE("metric_values: the faces' thickness from the metrics that measure it"
   CHECK_THROWS_AS(Weighted_dual_graph(g, bad), Invalid_input);
   bad.face_thickness[3] = std::numeric_limits<double>::quiet_NaN();
   CHECK(Weighted_dual_graph(g, bad).face_thickness().size() == g.number_of_faces());
+}
+
+TEST_CASE("median_reaches: the median of each image's measured reaches", "[vsi][thickness]")
+{
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  Metrics::VSI::Shape_images images;
+  images.reaches.resize(4, 4);
+  images.reaches << 1.f, nan, 3.f, 2.f, //
+    4.f, 1.f, 3.f, 2.f,                 //
+    nan, 7.f, nan, nan,                 //
+    nan, nan, nan, nan;
+  const std::vector<double> m = Metrics::VSI::median_reaches(images, Execution(2));
+  REQUIRE(m.size() == 4);
+  CHECK(m[0] == 2.);
+  CHECK(m[1] == 2.5);
+  CHECK(m[2] == 7.);
+  CHECK(std::isnan(m[3]));
+}
+
+TEST_CASE("vsi_face_thickness: the ball on a smooth surface, the chords on a rough one", "[vsi][thickness]")
+{
+  auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const std::size_t rings = 48, segments = 96;
+  for(const double bump : {0., 0.03})
+  {
+    // a sphere of radius 2; the rough one has its vertices pushed out and
+    // in, in a checkerboard, by 3% of the radius (bumps half as deep as
+    // they are apart)
+    test_meshes::Soup s = test_meshes::sphere(2., rings, segments);
+    for(std::size_t i = 1; i < rings; ++i)
+      for(std::size_t j = 0; j < segments; ++j)
+        for(double& c : s.points[1 + (i - 1) * segments + j])
+          c *= (i + j) % 2 == 0 ? 1. + bump : 1. - bump;
+    const Mesh m = test_meshes::to_mesh<Mesh>(s);
+    const Dual_graph g = make_dual_graph(m);
+    const Ray_casting::AABB_ray_caster caster(g.geometry());
+    const Metrics::VSI_result vsi = Metrics::compute_vsi(g, caster, Metrics::VSI_options(), Execution(2));
+    const std::vector<double> thickness = Metrics::vsi_face_thickness(vsi, Execution(2));
+    const double ball = median(vsi.reference_points.diameters), chord = median(Metrics::VSI::median_reaches(vsi.images));
+    INFO("bumps " << bump << ": median ball diameter " << ball << ", median chord " << chord);
+    REQUIRE(thickness.size() == g.number_of_faces());
+    if(bump == 0.)
+    {
+      // the ball fits the sphere, half a chord does not reach it
+      CHECK(ball == Approx(4.).epsilon(0.05));
+      CHECK(chord == Approx(4.).epsilon(0.05));
+      CHECK(thickness == vsi.reference_points.diameters);
+    }
+    else
+    {
+      // the ball shrinks to the bumps (2% of the diameter); half the
+      // median chord keeps a quarter of it
+      CHECK(ball < 0.1 * 4.);
+      CHECK(median(thickness) > 0.2 * 4.);
+      CHECK(median(thickness) > 10. * ball);
+      CHECK(median(thickness) < 4.);
+    }
+    // what the VSI metric reports as the faces' thickness
+    CHECK(Metrics::metric_values(Metrics::VSI_weight<>(), g, Execution(2)).face_thickness == thickness);
+  }
 }
 
 TEST_CASE("open meshes: rays that escape are ignored, no NaN reaches a weight", "[vsi][open]")

@@ -39,9 +39,9 @@
 /// A model may also measure the shape's thickness at each face: it then
 /// has a second call operator, `operator()(graph, exec, face_thickness)`,
 /// which returns the same weights and, when `face_thickness` is not null,
-/// stores there one value per face (the diameter of the largest ball
-/// inside the shape touching the face, `NaN` where unknown) or leaves it
-/// empty. `SpectralSeg::Metrics::metric_values()` calls it when it exists;
+/// stores there one value per face (a length across the shape at the
+/// face, `NaN` where unknown; the VSI metric's is
+/// `SpectralSeg::Metrics::vsi_face_thickness()`) or leaves it empty. `SpectralSeg::Metrics::metric_values()` calls it when it exists;
 /// the contrast merge of `SpectralSeg::segment_hybrid()` compares the
 /// segments' thickness (`SpectralSeg::Weighted_dual_graph::face_thickness()`).
 /// `SpectralSeg::Metrics::VSI_weight`, `SpectralSeg::Metrics::Part_aware_weight`,

@@ -13,7 +13,9 @@
 #include <SpectralSeg/internal/parallel_for.h>
 #include <SpectralSeg/internal/separate_compilation.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -115,6 +117,35 @@ SPECTRALSEG_INLINE std::vector<double> vsi_edge_weights(const Dual_graph& graph,
 #endif
 
 /// \ingroup PkgSpectralSegVSI
+/// \brief The thickness of the shape at each face: the larger of its
+/// reference point's ball diameter (`VSI::Reference_points::diameters`) and
+/// half its median chord (`VSI::median_reaches()`); `NaN` where neither is
+/// known.
+///
+/// Across a convex part neither exceeds the part's thickness: the ball
+/// fits inside it, and the median chord from the middle of a part is at
+/// most twice its thickness (a plate's). On a smooth surface the ball is
+/// the larger and gives the thickness. A rough surface (hair, plates,
+/// noise) shrinks the ball to the size of its bumps but shortens only the
+/// chords that run along it, so half the median chord is the larger there.
+SPECTRALSEG_INLINE std::vector<double> vsi_face_thickness(const VSI_result& vsi, const Execution& exec = Execution())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+{
+  std::vector<double> thickness = VSI::median_reaches(vsi.images, exec);
+  const std::vector<double>& ball = vsi.reference_points.diameters;
+  for(std::size_t f = 0; f < thickness.size(); ++f)
+  {
+    const double half_chord = 0.5 * thickness[f];
+    const double diameter = f < ball.size() ? ball[f] : std::numeric_limits<double>::quiet_NaN();
+    thickness[f] = std::isnan(half_chord) ? diameter : std::isnan(diameter) ? half_chord : std::max(diameter, half_chord);
+  }
+  return thickness;
+}
+#else
+;
+#endif
+
+/// \ingroup PkgSpectralSegVSI
 /// \brief Runs the whole VSI pipeline: reference points, shape images, edge weights.
 template <typename RayCaster>
 VSI_result compute_vsi(const Dual_graph& graph, const RayCaster& caster, const VSI_options& options = VSI_options(),
@@ -169,8 +200,8 @@ public:
   }
 
   /// one weight per dual edge of `graph`; with `face_thickness`, the
-  /// diameter of each face's inscribed ball goes there
-  /// (`VSI::Reference_points::diameters`, see `Metrics::metric_values()`)
+  /// thickness of the shape at each face goes there (`vsi_face_thickness()`,
+  /// see `Metrics::metric_values()`)
   std::vector<double> operator()(const Dual_graph& graph, const Execution& exec,
                                  std::vector<double>* face_thickness) const
   {
@@ -179,7 +210,7 @@ public:
     exec.report("ray casting setup", 1.);
     VSI_result r = compute_vsi(graph, caster, options_, exec);
     if(face_thickness)
-      *face_thickness = std::move(r.reference_points.diameters);
+      *face_thickness = vsi_face_thickness(r, exec);
     return std::move(r.weights);
   }
 

@@ -197,6 +197,42 @@ SPECTRALSEG_INLINE double image_difference(const float* a, const float* b, std::
 ;
 #endif
 
+/// \ingroup PkgSpectralSegVSI
+/// \brief The median of each face's local reaches, the chords through its
+/// reference point (`NaN` for a face with no measured pair).
+///
+/// From the middle of a part, the median chord is twice the thickness of a
+/// plate, 1.15 times the diameter of a long cylinder and the diameter of a
+/// ball. A rough surface shortens only the chords that run along it.
+SPECTRALSEG_INLINE std::vector<double> median_reaches(const Shape_images& images, const Execution& exec = Execution())
+#if SPECTRALSEG_DEFINE_FUNCTIONS
+{
+  const auto& reaches = images.reaches;
+  std::vector<double> out(static_cast<std::size_t>(reaches.rows()), std::numeric_limits<double>::quiet_NaN());
+  internal::parallel_for(out.size(), exec, "median reaches", [&](std::size_t f) {
+    thread_local std::vector<float> row;
+    row.clear();
+    for(Eigen::Index k = 0; k < reaches.cols(); ++k)
+    {
+      const float v = reaches(static_cast<Eigen::Index>(f), k);
+      if(!std::isnan(v))
+        row.push_back(v);
+    }
+    if(row.empty())
+      return;
+    const auto upper = row.begin() + static_cast<std::ptrdiff_t>(row.size() / 2);
+    std::nth_element(row.begin(), upper, row.end());
+    double median = *upper;
+    if(row.size() % 2 == 0)
+      median = 0.5 * (median + double(*std::max_element(row.begin(), upper)));
+    out[f] = median;
+  });
+  return out;
+}
+#else
+;
+#endif
+
 } // namespace VSI
 } // namespace Metrics
 } // namespace SpectralSeg
