@@ -251,8 +251,8 @@ TEST_CASE("vsi_face_thickness: the ball on a smooth surface, the chords on a rou
   for(const double bump : {0., 0.03})
   {
     // a sphere of radius 2; the rough one has its vertices pushed out and
-    // in, in a checkerboard, by 3% of the radius (bumps half as deep as
-    // they are apart)
+    // in, in a checkerboard, by 3% of the radius (bumps about as deep as
+    // the vertices are apart)
     test_meshes::Soup s = test_meshes::sphere(2., rings, segments);
     for(std::size_t i = 1; i < rings; ++i)
       for(std::size_t j = 0; j < segments; ++j)
