@@ -26,6 +26,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iostream>
 #include <limits>
@@ -148,9 +149,16 @@ int main(int argc, char** argv)
 
   // The part-aware metric also measured the shape's thickness at each face
   // (Metrics::vsi_face_thickness()): the contrast merge of segment_hybrid()
-  // keeps a boundary between a thin segment and a thick one.
-  std::vector<double> thickness = weighted.face_thickness();
-  std::nth_element(thickness.begin(), thickness.begin() + std::ptrdiff_t(thickness.size() / 2), thickness.end());
-  std::cout << "median thickness of the shape at a face: " << thickness[thickness.size() / 2] << std::endl;
+  // keeps a boundary between a thin segment and a thick one. A face where
+  // no ray was measured (open meshes) has NaN.
+  std::vector<double> thickness;
+  for(double t : weighted.face_thickness())
+    if(!std::isnan(t))
+      thickness.push_back(t);
+  if(!thickness.empty())
+  {
+    std::nth_element(thickness.begin(), thickness.begin() + std::ptrdiff_t(thickness.size() / 2), thickness.end());
+    std::cout << "median thickness of the shape at a face: " << thickness[thickness.size() / 2] << std::endl;
+  }
   return 0;
 }
